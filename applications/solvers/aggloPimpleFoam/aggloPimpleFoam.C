@@ -1,0 +1,150 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+Application
+    aggloPimpleFoam
+
+Group
+    grpLagrangianSolvers
+
+Description
+    Transient solver for incompressible, laminar or LES flow (PIMPLE) with
+    a Lagrangian particle cloud, derived from pimpleFoam.
+
+    - Momentum: pimpleFoam plus fvOptions (e.g. meanVelocityForce for a
+      constant mass flux) plus the cloud's momentum source
+      (1/rhoInf) cloud.SU(U) when the cloud is coupled (PSI-cell).
+    - Gravity acts on the particles only (constant/g); no body force is
+      applied to the fluid.
+    - The cloud is evolved once per step, before the PIMPLE loop, with the
+      fluid field of the previous step (explicit coupling, as DPMFoam).
+    - frozenFlow (PIMPLE dictionary, default no): skip the fluid solve and
+      track the particles in the stored velocity field.
+
+    Required fields: U, p (kinematic), the turbulence fields of the
+    selected model; constant/transportProperties holds nu and rhoInf;
+    constant/<cloud>Properties the cloud.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "turbulentTransportModel.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "basicKinematicCloud.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Transient solver for incompressible laminar or LES flow with a"
+        " Lagrangian particle cloud (two-way coupled, constant mass flux"
+        " through fvOptions, optional frozen flow)."
+    );
+
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "Cloud name (default: kinematicCloud)"
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+    #include "initContinuityErrs.H"
+
+    turbulence->validate();
+
+    if (!frozenFlow)
+    {
+        #include "CourantNo.H"
+        #include "setInitialDeltaT.H"
+    }
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+
+        if (!frozenFlow)
+        {
+            #include "CourantNo.H"
+            #include "setDeltaT.H"
+        }
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // Cloud first, on the previous step's flow (explicit coupling)
+        mu = laminarTransport.nu()*rhoInfValue;
+        cloud.evolve();
+
+        if (!frozenFlow)
+        {
+            // --- Pressure-velocity PIMPLE corrector loop
+            while (pimple.loop())
+            {
+                #include "UEqn.H"
+
+                // --- Pressure corrector loop
+                while (pimple.correct())
+                {
+                    #include "pEqn.H"
+                }
+
+                if (pimple.turbCorr())
+                {
+                    laminarTransport.correct();
+                    turbulence->correct();
+                }
+            }
+        }
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,306 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+Application
+    hardSphereCollide
+
+Group
+    grpLagrangianUtilities
+
+Description
+    Resolves one binary hard-sphere collision with the agglomeration and
+    structure models of the agglomerationHardSphere library and prints the
+    outcome as JSON on standard output: collision type (sticking/sliding),
+    model branch (agglomerate / rebound case), post-collision states or the
+    agglomerate, and the intermediate quantities of the models.
+
+    Needs no case. The dictionary holds the kernel input (see
+    hardSphereCollisionKernel) and the two particles:
+    \verbatim
+    material            { H 6.3e-20; E 7.2e10; nu 0.17; sigmaY 1.1e9;
+                          delta0 2e-10; rho0 2200; }
+    particleCollision   { en 0.97; et 0.44; muSt 0.94; muKin 0.092; }
+    agglomerationModel  EAM;
+    structureModel      CSM;
+    particle1
+    {
+        position    (0 0 0);        // [m]
+        U           (5e-4 0 0);     // [m/s]
+        omega       (0 0 0);        // [1/s]
+        d           12e-6;          // [m]
+        rho         2200;           // [kg/m3]
+        nPrimary    1;
+    }
+    particle2 { position (12e-6 0 0); U (-5e-4 0 0); omega (0 0 0);
+                d 12e-6; rho 2200; nPrimary 1; }
+    contactTolerance    1e-6;       // optional: |dist - (d1+d2)/2|/((d1+d2)/2)
+    \endverbatim
+
+    The particles must touch (within contactTolerance) and approach each
+    other; otherwise the utility stops with a message.
+
+Usage
+    hardSphereCollide <dictFile>
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "IFstream.H"
+#include "hardSphereCollisionKernel.H"
+#include "hardSphereInput.H"
+#include <iostream>
+#include <iomanip>
+#include <sstream>
+#include <cmath>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+std::string num(const scalar v)
+{
+    if (std::isnan(v))
+    {
+        return "null";
+    }
+    if (std::isinf(v))
+    {
+        return v > 0 ? "\"inf\"" : "\"-inf\"";
+    }
+    std::ostringstream os;
+    os << std::setprecision(17) << v;
+    return os.str();
+}
+
+
+std::string vec(const vector& v)
+{
+    return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]";
+}
+
+
+std::string state(const hardSphereState& p, const std::string& indent)
+{
+    std::ostringstream os;
+    os  << "{" << '\n'
+        << indent << "  \"position\": " << vec(p.x) << ",\n"
+        << indent << "  \"U\": " << vec(p.U) << ",\n"
+        << indent << "  \"omega\": " << vec(p.omega) << ",\n"
+        << indent << "  \"d\": " << num(p.d) << ",\n"
+        << indent << "  \"rho\": " << num(p.rho) << ",\n"
+        << indent << "  \"nPrimary\": " << p.nPrimary << ",\n"
+        << indent << "  \"mass\": " << num(p.mass()) << "\n"
+        << indent << "}";
+    return os.str();
+}
+
+
+hardSphereState readParticle(const dictionary& dict, const word& name)
+{
+    using namespace hardSphereInput;
+    const dictionary& pd = dict.subDict(name);
+
+    const scalar d = getInRange(pd, "d", open(0), open(GREAT));
+    const scalar rho = getInRange(pd, "rho", open(0), open(GREAT));
+    const label nPrimary = pd.getOrDefault<label>("nPrimary", 1);
+    if (nPrimary < 1)
+    {
+        FatalIOErrorInFunction(pd)
+            << "Entry 'nPrimary' = " << nPrimary << " must be >= 1"
+            << exit(FatalIOError);
+    }
+
+    return hardSphereState
+    (
+        pd.get<point>("position"),
+        pd.get<vector>("U"),
+        pd.getOrDefault<vector>("omega", Zero),
+        d,
+        rho,
+        nPrimary
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Resolve one binary hard-sphere collision (with the selected"
+        " agglomeration and structure models) and print the outcome as JSON"
+    );
+    argList::noBanner();
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::noCheckProcessorDirectories();
+    argList::addArgument("dictFile");
+
+    argList args(argc, argv, false, false, false);
+
+    const fileName dictFile(args.get<fileName>(1));
+    IFstream is(dictFile);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot read dictionary file " << dictFile
+            << exit(FatalError);
+    }
+    const dictionary dict(is);
+
+    // Messages of the model constructors go to stderr; stdout is JSON only
+    const int infoLevel = messageStream::level;
+    messageStream::level = 0;
+    const hardSphereCollisionKernel kernel(dict);
+    messageStream::level = infoLevel;
+
+    const hardSphereState p1(readParticle(dict, "particle1"));
+    const hardSphereState p2(readParticle(dict, "particle2"));
+
+    // Contact check
+    const scalar ell = 0.5*(p1.d + p2.d);
+    const scalar dist = mag(p2.x - p1.x);
+    const scalar tol =
+        dict.getOrDefault<scalar>("contactTolerance", 1e-6);
+    if (!(dist > 0) || mag(dist - ell) > tol*ell)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The particles are not in contact: centre distance "
+            << dist << " m, contact distance (d1 + d2)/2 = " << ell
+            << " m (gap " << dist - ell << " m, relative "
+            << (dist - ell)/ell << ", contactTolerance " << tol << ")." << nl
+            << "    Place particle2 at particle1.position + (d1 + d2)/2 n."
+            << exit(FatalIOError);
+    }
+
+    // Approach check
+    const binaryCollision pair(p1, p2);
+    if (!pair.approaching())
+    {
+        FatalIOErrorInFunction(dict)
+            << "The particles are not approaching: u_n = (U2 - U1).n = "
+            << pair.un() << " m/s >= 0 with n = " << pair.n()
+            << " pointing from particle1 to particle2." << nl
+            << "    A collision needs u_n < 0."
+            << exit(FatalIOError);
+    }
+
+    const collisionOutcome out(kernel.collide(p1, p2));
+
+    const scalar mBefore = p1.mass() + p2.mass();
+    const vector PBefore = p1.momentum() + p2.momentum();
+    vector PAfter(Zero);
+    scalar mAfter = 0;
+    scalar KEafter = 0;
+    if (out.agglomerates)
+    {
+        PAfter = out.agglomerate.momentum();
+        mAfter = out.agglomerate.mass();
+        KEafter = out.agglomerate.kineticEnergy();
+    }
+    else
+    {
+        PAfter = out.p1.momentum() + out.p2.momentum();
+        mAfter = out.p1.mass() + out.p2.mass();
+        KEafter = out.p1.kineticEnergy() + out.p2.kineticEnergy();
+    }
+
+    std::ostringstream os;
+    os  << "{\n"
+        << "  \"agglomerationModel\": \""
+        << kernel.agglomeration().type() << "\",\n"
+        << "  \"structureModel\": "
+        << (kernel.hasStructure()
+            ? "\"" + std::string(kernel.structure().type()) + "\""
+            : std::string("null")) << ",\n"
+        << "  \"collisionType\": \""
+        << collisionOutcome::collisionTypeNames[out.type] << "\",\n"
+        << "  \"branch\": \""
+        << collisionOutcome::branchTypeNames[out.branch] << "\",\n"
+        << "  \"agglomerate\": " << (out.agglomerates ? "true" : "false")
+        << ",\n"
+        << "  \"normal\": " << vec(pair.n()) << ",\n"
+        << "  \"impactNormalVelocity\": " << num(pair.un()) << ",\n"
+        << "  \"slip\": " << num(pair.s()) << ",\n";
+
+    if (out.agglomerates)
+    {
+        os  << "  \"particles\": null,\n"
+            << "  \"agglomerateState\": " << state(out.agglomerate, "  ")
+            << ",\n";
+    }
+    else
+    {
+        os  << "  \"particles\": [" << state(out.p1, "    ") << ", "
+            << state(out.p2, "    ") << "],\n"
+            << "  \"agglomerateState\": null,\n";
+    }
+
+    os  << "  \"intermediates\": {\n"
+        << "    \"f_na\": " << num(out.fna) << ",\n"
+        << "    \"f_nc\": " << num(out.fnc) << ",\n"
+        << "    \"f_nc_star\": " << num(out.fncStar) << ",\n"
+        << "    \"t_star\": " << num(out.tStar) << ",\n"
+        << "    \"dE_vdW\": " << num(out.dEvdW) << ",\n"
+        << "    \"E_kin_plus\": " << num(out.EkinPlus) << ",\n"
+        << "    \"E_rot_plus\": " << num(out.ErotPlus) << ",\n"
+        << "    \"E_rot_ag\": " << num(out.ErotAg) << ",\n"
+        << "    \"k_n2\": " << num(out.kn2) << ",\n"
+        << "    \"k_t2\": " << num(out.kt2) << ",\n"
+        << "    \"k_omega2\": " << num(out.komega2) << ",\n"
+        << "    \"deltaL\": " << num(out.deltaL) << ",\n"
+        << "    \"criterionI\": " << (out.critI ? "true" : "false") << ",\n"
+        << "    \"criterionII\": " << (out.critII ? "true" : "false")
+        << ",\n"
+        << "    \"spinClamped\": " << (out.spinClamped ? "true" : "false")
+        << ",\n"
+        << "    \"dKE_formation\": " << num(out.dKEformation) << ",\n"
+        << "    \"spinCapped\": " << (out.spinCapped ? "true" : "false")
+        << "\n"
+        << "  },\n"
+        << "  \"balance\": {\n"
+        << "    \"massBefore\": " << num(mBefore) << ",\n"
+        << "    \"massAfter\": " << num(mAfter) << ",\n"
+        << "    \"momentumBefore\": " << vec(PBefore) << ",\n"
+        << "    \"momentumAfter\": " << vec(PAfter) << ",\n"
+        << "    \"kineticEnergyBefore\": "
+        << num(p1.kineticEnergy() + p2.kineticEnergy()) << ",\n"
+        << "    \"kineticEnergyAfter\": " << num(KEafter) << "\n"
+        << "  }\n"
+        << "}\n";
+
+    std::cout << os.str() << std::flush;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

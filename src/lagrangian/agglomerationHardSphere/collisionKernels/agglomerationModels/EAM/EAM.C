@@ -1,0 +1,348 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "EAM.H"
+#include "tensor.H"
+#include "addToRunTimeSelectionTable.H"
+#include <limits>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace agglomerationModels
+{
+    defineTypeNameAndDebug(EAM, 0);
+    addToRunTimeSelectionTable(agglomerationModel, EAM, dictionary);
+}
+}
+
+
+const Foam::Enum<Foam::agglomerationModels::EAM::projectionType>
+Foam::agglomerationModels::EAM::projectionTypeNames
+({
+    { projectionType::PAPER, "paper" },
+    { projectionType::FULL, "full" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::agglomerationModels::EAM::EAM
+(
+    const word& type,
+    const dictionary& dict,
+    const hardSphereMaterial& material,
+    const collisionCoefficients& coeffs,
+    const bool alletto2014
+)
+:
+    agglomerationModel(type, dict, material, coeffs),
+    impactVelocity_
+    (
+        impactVelocityTypeNames.getOrDefault
+        (
+            "impactVelocity",
+            coeffDict_,
+            impactVelocityType::NORMAL
+        )
+    ),
+    tangentialProjection_
+    (
+        projectionTypeNames.getOrDefault
+        (
+            "tangentialProjection",
+            coeffDict_,
+            projectionType::PAPER
+        )
+    ),
+    alletto2014_(alletto2014)
+{
+    Info<< "    " << type << ": impactVelocity "
+        << impactVelocityTypeNames[impactVelocity_]
+        << ", tangentialProjection "
+        << projectionTypeNames[tangentialProjection_] << endl;
+}
+
+
+Foam::agglomerationModels::EAM::EAM
+(
+    const dictionary& dict,
+    const hardSphereMaterial& material,
+    const collisionCoefficients& coeffs
+)
+:
+    EAM(typeName, dict, material, coeffs, false)
+{}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::scalar Foam::agglomerationModels::EAM::vanDerWaalsEnergy
+(
+    const hardSphereMaterial& material,
+    const scalar en,
+    const scalar d1,
+    const scalar rho1,
+    const scalar d2,
+    const scalar rho2,
+    const scalar vE
+)
+{
+    // AB16 Eq. 37
+    const scalar bracket =
+        rho1*rho2*(1 - en*en)
+       /(
+            6*material.pMax()*(d1 + d2)
+           *(rho1*d1*d1*d1 + rho2*d2*d2*d2)
+        );
+
+    return
+        material.H()/(12*sqr(material.delta0()))
+       *sqr(d1*d2)*vE*std::sqrt(bracket);
+}
+
+
+Foam::scalar Foam::agglomerationModels::EAM::dumbbellRotationalEnergy
+(
+    const vector& L,
+    const vector& n,
+    const scalar I1,
+    const scalar I2,
+    const scalar mHat,
+    const scalar ell
+)
+{
+    // Closed form of AB16 Eqs. 38-46 (physics.md section 2.3)
+    const scalar Ln2 = sqr(L & n);
+    return
+        0.5
+       *(
+            Ln2/(I1 + I2)
+          + max(magSqr(L) - Ln2, scalar(0))/(I1 + I2 + mHat*ell*ell)
+        );
+}
+
+
+Foam::scalar Foam::agglomerationModels::EAM::dumbbellRotationalEnergySolve
+(
+    const vector& L,
+    const vector& n,
+    const scalar I1,
+    const scalar I2,
+    const scalar mHat,
+    const scalar ell
+)
+{
+    // AB16 Eqs. 42-43: I_ag = (I1 + I2) 1 + mHat ell^2 (1 - n n)
+    const tensor Iag = (I1 + I2)*I + mHat*ell*ell*(I - sqr(n));
+
+    // AB16 Eqs. 44-46: solve I_ag omega_ag = L
+    const vector omegaAg = inv(Iag) & L;
+
+    return 0.5*(omegaAg & L);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::agglomerationModels::EAM::collide
+(
+    const binaryCollision& pair,
+    const hardSphereState& p1,
+    const hardSphereState& p2,
+    collisionOutcome& outcome
+) const
+{
+    // 1. Collision without cohesion (AB16 Sec. 2.2.1)
+    reboundWithoutCohesion(pair, p1, p2, outcome);
+
+    const hardSphereState& p1Plus = outcome.p1;
+    const hardSphereState& p2Plus = outcome.p2;
+    const vector& n = pair.n();
+    const scalar mHat = pair.mHat();
+    const scalar I1 = p1.inertia();
+    const scalar I2 = p2.inertia();
+
+    // 2. van-der-Waals energy difference (AB16 Eq. 37)
+    const scalar vE =
+        impactVelocity_ == impactVelocityType::NORMAL
+      ? -pair.un()
+      : mag(pair.ur());
+
+    const scalar dE =
+        vanDerWaalsEnergy
+        (
+            material_, coeffs_.en(), p1.d, p1.rho, p2.d, p2.rho, vE
+        );
+
+    // 3. Energies after the collision (AB16 Eq. 22) and of the would-be
+    //    agglomerate (AB16 Eqs. 38-46; pre-collision L, Eq. 41)
+    const vector w = p2Plus.U - p1Plus.U;
+    const scalar EkinPlus = 0.5*mHat*magSqr(w);
+    const scalar ErotPlus =
+        0.5*I1*magSqr(p1Plus.omega) + 0.5*I2*magSqr(p2Plus.omega);
+    const vector L = pair.angularMomentum(p1, p2);
+    const scalar ErotAg =
+        dumbbellRotationalEnergy(L, n, I1, I2, mHat, pair.ell());
+
+    // Tangential direction of the cohesion correction (physics.md A4)
+    vector tE(Zero);
+    if (tangentialProjection_ == projectionType::PAPER)
+    {
+        tE = pair.t();
+    }
+    else
+    {
+        const vector wt = w - (w & n)*n;
+        const scalar magWt = mag(wt);
+        if (magWt > 0)
+        {
+            tE = wt/magWt;
+        }
+    }
+
+    const scalar wn = w & n;
+    const scalar wt = w & tE;
+    const scalar En = 0.5*mHat*wn*wn;
+    const scalar Et = 0.5*mHat*wt*wt;
+
+    // AB16 Eq. 55 (En > 0 since e_n > 0 and u_n < 0)
+    const scalar kn2 = 1 - dE/En;
+
+    // AB16 Eq. 58, only if kn2 <= 0 (physics.md section 2.4)
+    scalar kt2 = std::numeric_limits<scalar>::quiet_NaN();
+    if (kn2 <= 0)
+    {
+        if (Et > 0)
+        {
+            kt2 = 1 - (dE - En)/Et;
+        }
+        else
+        {
+            kt2 =
+                dE > En
+              ? -std::numeric_limits<scalar>::infinity()
+              : scalar(1);
+        }
+    }
+
+    outcome.dEvdW = dE;
+    outcome.EkinPlus = EkinPlus;
+    outcome.ErotPlus = ErotPlus;
+    outcome.ErotAg = ErotAg;
+    outcome.kn2 = kn2;
+    outcome.kt2 = kt2;
+
+    // 4. Agglomeration: AB16 Eq. 21, or Eq. 65 (corrected model only)
+    if (dE >= EkinPlus + ErotPlus - ErotAg)
+    {
+        outcome.agglomerates = true;
+        outcome.branch = collisionOutcome::EQ21;
+        return;
+    }
+    if (!alletto2014_ && kn2 <= 0 && kt2 < 0)
+    {
+        outcome.agglomerates = true;
+        outcome.branch = collisionOutcome::EQ65;
+        return;
+    }
+
+    // 5. Rebound with cohesion (AB16 Eqs. 47-59; Alletto: Eqs. 60-64)
+    scalar kn = 1;
+    scalar kt = 1;
+    scalar komega = 1;
+    if (kn2 > 0)
+    {
+        outcome.branch = collisionOutcome::CASE_I;
+        kn = std::sqrt(kn2);
+    }
+    else if (kt2 >= 0)
+    {
+        outcome.branch = collisionOutcome::CASE_II;
+        kn = 0;
+        kt = std::sqrt(kt2);
+    }
+    else
+    {
+        // Only reached by alletto2014
+        outcome.branch = collisionOutcome::CASE_III_REBOUND;
+        kn = 0;
+        kt = 0;
+        const scalar X = dE - En - Et;
+        if (ErotPlus > 0)
+        {
+            // AB16 Eq. 64; beta of Eq. 62 cancels
+            const scalar komega2 = 1 - X/ErotPlus;
+            outcome.komega2 = komega2;
+            if (komega2 < 0)
+            {
+                outcome.spinClamped = true;
+                komega = 0;
+            }
+            else
+            {
+                komega = std::sqrt(komega2);
+            }
+        }
+        else
+        {
+            komega = 0;
+        }
+    }
+
+    // AB16 Eq. 52
+    const vector fAg = -(1 - kn)*wn*n - (1 - kt)*wt*tE;
+
+    // AB16 Eqs. 47-48: centres only, spins scaled by k_omega
+    outcome.p1.U -= (mHat/pair.m1())*fAg;
+    outcome.p2.U += (mHat/pair.m2())*fAg;
+    outcome.p1.omega *= komega;
+    outcome.p2.omega *= komega;
+
+    // physics.md A6: orbital angular momentum change (non-zero in case II)
+    outcome.deltaL = mag(mHat*pair.ell()*(n ^ fAg));
+}
+
+
+void Foam::agglomerationModels::EAM::writeOptions(Ostream& os) const
+{
+    agglomerationModel::writeOptions(os);
+    os.writeEntry
+    (
+        "impactVelocity",
+        impactVelocityTypeNames[impactVelocity_]
+    );
+    os.writeEntry
+    (
+        "tangentialProjection",
+        projectionTypeNames[tangentialProjection_]
+    );
+}
+
+
+// ************************************************************************* //
