@@ -26,9 +26,10 @@ def foam_bin(name):
 
 def run(cmd, cwd, log, check=True, timeout=600):
     """Run cmd in cwd, write stdout+stderr to cwd/log, return the result."""
+    env = dict(os.environ, PWD=str(cwd))
     res = subprocess.run(
         cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-        text=True, timeout=timeout,
+        text=True, timeout=timeout, env=env,
     )
     (Path(cwd) / log).write_text(res.stdout)
     if check and res.returncode != 0:

@@ -26,7 +26,9 @@ def test_blockmesh_checkmesh(case_dir, foam_env):
 def test_solver_loads_and_rejects_empty_case(case_dir, foam_env):
     res = run([foam_bin("aggloPimpleFoam")], case_dir, "log.solver",
               check=False)
-    assert "Application : aggloPimpleFoam" in res.stdout
+    # OpenFOAM banner, then the fatal error about the missing case files
+    assert "OpenFOAM: The Open Source CFD Toolbox" in res.stdout
+    assert re.search(r"^Exec\s+:\s+\S*aggloPimpleFoam\s*$", res.stdout, re.M)
     assert res.returncode != 0
     assert "FOAM FATAL" in res.stdout
     assert "controlDict" in res.stdout
