@@ -414,3 +414,33 @@ TEST(ReferenceIntermediates, Alletto2014Row14CaseIIIRebound)
     const scalar KE = out.p1.kineticEnergy() + out.p2.kineticEnergy();
     EXPECT_TRUE(near(KEnone - KE, out.dEvdW, 1e-9));
 }
+
+
+TEST(ReferenceIntermediates, A6CaseIIAngularMomentumDefect)
+{
+    // physics.md section 5.1: row 15 (EAM case II) changes the pair
+    // angular momentum by m^ ell (1 - k_t)(w.t_E) (n x t_E), non-zero; the
+    // spins are those of the collision without cohesion
+    const dictionary dict(kernelDict("EAM"));
+    const hardSphereCollisionKernel kernel(dict);
+    hardSphereState p1, p2;
+    referencePair(1e-2, 85, 0, 0, p1, p2);
+    const binaryCollision pair(p1, p2);
+    const collisionOutcome o(kernel.collide(p1, p2));
+    ASSERT_EQ(o.branch, collisionOutcome::CASE_II);
+
+    const vector L0 = pair.angularMomentum(p1, p2);
+    const vector L1 = binaryCollision(o.p1, o.p2).angularMomentum(o.p1, o.p2);
+    const scalar dL = mag(L1 - L0);
+    EXPECT_GT(dL, 1e-3*mag(L0));
+    EXPECT_TRUE(near(dL, o.deltaL, 1e-10));
+
+    // |dL| = m^ ell (1 - k_t)|w.t| with w from the no-cohesion rebound
+    const dictionary dictNone(kernelDict("none"));
+    const hardSphereCollisionKernel none(dictNone);
+    const collisionOutcome r(none.collide(p1, p2));
+    const vector w = r.p2.U - r.p1.U;
+    const scalar kt = std::sqrt(o.kt2);
+    EXPECT_TRUE(near(dL, pair.mHat()*pair.ell()*(1 - kt)*std::abs(w & pair.t()),
+        1e-10));
+}

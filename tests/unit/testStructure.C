@@ -76,6 +76,9 @@ TEST(Structure, CSMPackingTableDiameters)
     // physics.md section 4.3: d_ag/d0 column (exact f_pack; table 5 digits)
     const hardSphereCollisionKernel csm(kernelDict("EAM", "CSM"));
     const structureModel& s = csm.structure();
+    EXPECT_TRUE(near(s.diameter(2, 1), 1.957034, 1e-6));
+    EXPECT_TRUE(near(s.diameter(3, 1), 2.11801, 2e-5));
+    EXPECT_TRUE(near(s.diameter(4, 1), 2.11801, 2e-5));
     EXPECT_TRUE(near(s.diameter(5, 1), 2.35042, 2e-5));
     EXPECT_TRUE(near(s.diameter(8, 1), 2.48140, 2e-5));
     EXPECT_TRUE(near(s.diameter(27, 1), 3.72210, 2e-5));
