@@ -62,15 +62,7 @@ Foam::agglomerationModels::EAM::EAM
 )
 :
     agglomerationModel(type, dict, material, coeffs),
-    impactVelocity_
-    (
-        impactVelocityTypeNames.getOrDefault
-        (
-            "impactVelocity",
-            coeffDict_,
-            impactVelocityType::NORMAL
-        )
-    ),
+    impactVelocity_(readImpactVelocity()),
     tangentialProjection_
     (
         projectionTypeNames.getOrDefault
@@ -189,10 +181,7 @@ void Foam::agglomerationModels::EAM::collide
     const scalar I2 = p2.inertia();
 
     // 2. van-der-Waals energy difference (AB16 Eq. 37)
-    const scalar vE =
-        impactVelocity_ == impactVelocityType::NORMAL
-      ? -pair.un()
-      : mag(pair.ur());
+    const scalar vE = impactSpeed(impactVelocity_, pair);
 
     const scalar dE =
         vanDerWaalsEnergy

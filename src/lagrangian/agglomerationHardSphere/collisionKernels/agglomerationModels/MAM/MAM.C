@@ -80,15 +80,7 @@ Foam::agglomerationModels::MAM::MAM
 )
 :
     agglomerationModel(typeName, dict, material, coeffs),
-    impactVelocity_
-    (
-        impactVelocityTypeNames.getOrDefault
-        (
-            "impactVelocity",
-            coeffDict_,
-            impactVelocityType::NORMAL
-        )
-    ),
+    impactVelocity_(readImpactVelocity()),
     closure_
     (
         closureTypeNames.getOrDefault
@@ -203,10 +195,7 @@ void Foam::agglomerationModels::MAM::collide
     const scalar fna = pair.fna(en);
 
     // AB16 Eqs. 67-74 (reconstructed)
-    const scalar vM =
-        impactVelocity_ == impactVelocityType::NORMAL
-      ? magUn
-      : mag(pair.ur());
+    const scalar vM = impactSpeed(impactVelocity_, pair);
     const scalar tStar = hertzTimeScale(mHat, p1.d, p2.d, vM);
     const scalar dtComp = CH*tStar;
     const scalar dtDif = g(en)*tStar;

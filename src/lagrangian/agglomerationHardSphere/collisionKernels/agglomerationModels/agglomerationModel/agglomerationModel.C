@@ -86,6 +86,32 @@ void Foam::agglomerationModel::reboundWithoutCohesion
 }
 
 
+Foam::agglomerationModel::impactVelocityType
+Foam::agglomerationModel::readImpactVelocity() const
+{
+    return impactVelocityTypeNames.getOrDefault
+    (
+        "impactVelocity",
+        coeffDict_,
+        impactVelocityType::NORMAL
+    );
+}
+
+
+Foam::scalar Foam::agglomerationModel::impactSpeed
+(
+    const impactVelocityType option,
+    const binaryCollision& pair
+)
+{
+    // physics.md A1: v = |u_n| (head-on assumption) or |u_r|
+    return
+        option == impactVelocityType::NORMAL
+      ? -pair.un()
+      : mag(pair.ur());
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::agglomerationModel::writeOptions(Ostream& os) const
