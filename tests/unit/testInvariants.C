@@ -217,7 +217,10 @@ scalar criticalVelocity
 TEST(Invariants, T1T2T3None)           { checkInvariants("none", "CSM"); }
 TEST(Invariants, T1T2T3EAM_CSM)        { checkInvariants("EAM", "CSM"); }
 TEST(Invariants, T1T2T3EAM_VSM)        { checkInvariants("EAM", "VSM"); }
-TEST(Invariants, T1T2T3EAMAlletto2014) { checkInvariants("EAMAlletto2014", "CSM"); }
+TEST(Invariants, T1T2T3EAMAlletto2014)
+{
+    checkInvariants("EAMAlletto2014", "CSM");
+}
 TEST(Invariants, T1T2T3MAM_CSM)        { checkInvariants("MAM", "CSM"); }
 TEST(Invariants, T1T2T3MAM_VSM)        { checkInvariants("MAM", "VSM"); }
 

@@ -126,7 +126,10 @@ TEST(BadInput, NeitherPressureNorYield)
 TEST(BadInput, UnknownAgglomerationModel)
 {
     const std::string msg =
-        kernelError(replaced(base, "agglomerationModel EAM", "agglomerationModel EMA"));
+        kernelError
+        (
+            replaced(base, "agglomerationModel EAM", "agglomerationModel EMA")
+        );
     EXPECT_NE(msg.find("EMA"), std::string::npos) << msg;
     EXPECT_NE(msg.find("MAM"), std::string::npos) << msg;
     EXPECT_NE(msg.find("EAMAlletto2014"), std::string::npos) << msg;
