@@ -1,0 +1,193 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "AgglomerateParcel.H"
+#include "processorPolyPatch.H"
+#include "wallPolyPatch.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
+(
+    const AgglomerateParcel<ParcelType>& p
+)
+:
+    ParcelType(p),
+    omega_(p.omega_),
+    position0_(p.position0_),
+    lastContactTime_(p.lastContactTime_),
+    nPrimary_(p.nPrimary_),
+    lastPartnerProc_(p.lastPartnerProc_),
+    lastPartnerId_(p.lastPartnerId_),
+    status_(p.status_)
+{}
+
+
+template<class ParcelType>
+Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
+(
+    const AgglomerateParcel<ParcelType>& p,
+    const polyMesh& mesh
+)
+:
+    ParcelType(p, mesh),
+    omega_(p.omega_),
+    position0_(p.position0_),
+    lastContactTime_(p.lastContactTime_),
+    nPrimary_(p.nPrimary_),
+    lastPartnerProc_(p.lastPartnerProc_),
+    lastPartnerId_(p.lastPartnerId_),
+    status_(p.status_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+template<class TrackCloudType>
+bool Foam::AgglomerateParcel<ParcelType>::move
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar trackTime
+)
+{
+    typename TrackCloudType::parcelType& p =
+        static_cast<typename TrackCloudType::parcelType&>(*this);
+
+    td.switchProcessor = false;
+
+    switch (td.part())
+    {
+        case trackingData::tpLinearTrack:
+        {
+            ParcelType::move(cloud, td, trackTime);
+            break;
+        }
+        case trackingData::tpRelocate:
+        {
+            td.keepParticle = true;
+
+            if (!hasStatus(RELOCATE))
+            {
+                p.stepFraction() = 1;
+                break;
+            }
+
+            // Straight line to the target, no forces, no time
+            while
+            (
+                td.keepParticle
+             && !td.switchProcessor
+             && p.stepFraction() < 1
+            )
+            {
+                const scalar f = 1 - p.stepFraction();
+                const vector s = (position0_ - p.position())/f;
+
+                p.trackToAndHitFace(f*s, f, cloud, td);
+            }
+
+            if (!td.switchProcessor)
+            {
+                status_ &= ~RELOCATE;
+            }
+            break;
+        }
+    }
+
+    return td.keepParticle;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+bool Foam::AgglomerateParcel<ParcelType>::hitPatch
+(
+    TrackCloudType& cloud,
+    trackingData& td
+)
+{
+    typename TrackCloudType::parcelType& p =
+        static_cast<typename TrackCloudType::parcelType&>(*this);
+
+    const polyPatch& pp = this->mesh().boundaryMesh()[this->patch()];
+
+    if (td.part() == trackingData::tpRelocate)
+    {
+        if (polyPatch::constraintType(pp.type()))
+        {
+            // Processor, cyclic, ...: the generic handling transfers
+            return false;
+        }
+
+        // A relocation ends at any other boundary
+        p.stepFraction() = 1;
+        return true;
+    }
+
+    if (isA<wallPolyPatch>(pp) && cloud.hitWallCentre(p, pp))
+    {
+        return true;
+    }
+
+    return ParcelType::hitPatch(cloud, td);
+}
+
+
+template<class ParcelType>
+void Foam::AgglomerateParcel<ParcelType>::transformProperties
+(
+    const tensor& T
+)
+{
+    ParcelType::transformProperties(T);
+
+    omega_ = transform(T, omega_);
+    position0_ = transform(T, position0_);
+}
+
+
+template<class ParcelType>
+void Foam::AgglomerateParcel<ParcelType>::transformProperties
+(
+    const vector& separation
+)
+{
+    ParcelType::transformProperties(separation);
+
+    // A position moves with the parcel; omega is translation invariant
+    position0_ += separation;
+}
+
+
+// * * * * * * * * * * * * * * IOStream operators  * * * * * * * * * * * * * //
+
+#include "AgglomerateParcelIO.C"
+
+// ************************************************************************* //
