@@ -28,7 +28,7 @@ License
 #include "HardSphereCloud.H"
 #include "wallPolyPatch.H"
 #include "HashSet.H"
-#include "cpuTime.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -622,7 +622,7 @@ void Foam::HardSphereCloud<CloudType>::collide
         const scalar tc = tStart + c.s*dt;
 
         // Counted once: where the lower-id partner is real
-        if (iLow)
+        if (iLow || pjRealPtr)
         {
             ++counts[hs::COL];
             ++counts[hs::COL_FIRST + c.category];
@@ -697,7 +697,7 @@ void Foam::HardSphereCloud<CloudType>::collide
                 p.nPrimary() = ag.nPrimary;
                 p.lastPartnerProc() = -1;
                 p.lastPartnerId() = -1;
-                p.lastContactTime() = -VGREAT;
+                p.lastContactTime() = -GREAT;
                 p.position0() = xAg;
                 p.setStatus(parcelType::COLLIDED);
                 p.setStatus(parcelType::RELOCATE);
@@ -1112,7 +1112,7 @@ void Foam::HardSphereCloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
-    cpuTime timer;
+    clockTime timer;
 
     // Start-of-step positions
     for (parcelType& p : *this)
@@ -1126,7 +1126,7 @@ void Foam::HardSphereCloud<CloudType>::motion
     td.part() = parcelType::trackingData::tpLinearTrack;
     CloudType::motion(cloud, td);
 
-    const scalar trackingTime = timer.cpuTimeIncrement();
+    const scalar trackingTime = timer.timeIncrement();
 
     List<label> counts(hardSphereStatistics::N_COUNTERS, Zero);
     scalar sumDeltaL = 0;
@@ -1207,11 +1207,11 @@ void Foam::HardSphereCloud<CloudType>::motion
         counts[hardSphereStatistics::WALL_CENTRE] += nWallCentre_;
     }
 
-    const scalar collisionTime = timer.cpuTimeIncrement();
+    const scalar collisionTime = timer.timeIncrement();
 
     statistics(counts, sumDeltaL, energyGain, colBin, colFirstBin, aggBin);
 
-    Info<< "    Hard-sphere cpu time: tracking "
+    Info<< "    Hard-sphere wall-clock time: tracking "
         << returnReduce(trackingTime, maxOp<scalar>())
         << " s, collision stage "
         << returnReduce(collisionTime, maxOp<scalar>()) << " s" << endl;

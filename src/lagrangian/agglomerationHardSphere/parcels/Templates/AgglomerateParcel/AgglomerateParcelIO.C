@@ -57,7 +57,7 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
     ParcelType(mesh, is, readFields, newFormat),
     omega_(Zero),
     position0_(Zero),
-    lastContactTime_(-VGREAT),
+    lastContactTime_(-GREAT),
     nPrimary_(1),
     lastPartnerProc_(-1),
     lastPartnerId_(-1),
@@ -161,7 +161,7 @@ void Foam::AgglomerateParcel<ParcelType>::readFields(CloudType& c)
         p.nPrimary_ = nPrimary().size() ? nPrimary()[i] : 1;
         p.lastPartnerProc_ = lastProc().size() ? lastProc()[i] : -1;
         p.lastPartnerId_ = lastId().size() ? lastId()[i] : -1;
-        p.lastContactTime_ = lastTime().size() ? lastTime()[i] : -VGREAT;
+        p.lastContactTime_ = lastTime().size() ? lastTime()[i] : -GREAT;
         p.position0_ = p.position();
         p.status_ = 0;
 

@@ -1,0 +1,283 @@
+"""Builder for small hard-sphere cloud cases: a box mesh (walls or cyclic
+pairs per direction), frozen fluid at rest, no particle forces, and a
+scripted initial particle state written as lagrangian fields at time 0.
+With no forces the particles move in straight lines, so every collision
+and wall impact can be predicted by hand or with hardSphereCollide."""
+
+import math
+import re
+from pathlib import Path
+
+from conftest import foam_bin, run
+
+HEADER = """FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    location    "{loc}";
+    object      {obj};
+}}
+"""
+
+# Quartz, 12 um, Tab. 1 (physics.md 0.6): the kernel of the utility tests
+KERNEL = """
+    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.612985e9; delta0 2e-10;
+               rho0 2200; }
+    particleCollision { en 0.97; et 0.44; muSt 0.94; muKin 0.092; }
+    structureModel CSM;
+"""
+
+WALL = "{ wallModel smooth; smoothCoeffs { en 0.8; et 0.4; muSt 0.3; " \
+       "muKin 0.15; } }"
+
+
+def write(path, text):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+
+
+def foamfile(path, cls, loc, obj, body):
+    write(path, HEADER.format(cls=cls, loc=loc, obj=obj) + body + "\n")
+
+
+def vec(v):
+    return "(" + " ".join(repr(float(c)) for c in v) + ")"
+
+
+def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
+             kinds=("wall", "wall", "wall"), particles=(), dt=1e-4,
+             end_time=1e-3, write_interval=None, hard_sphere="",
+             agglomeration="none", write_format="ascii",
+             decompose=(1, 1, 1), wall_velocity=None, cloud_extra=""):
+    """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
+    particles: dicts with x, U, d (optional omega, rho, nPrimary, id)."""
+    case = Path(case)
+    steps = round(end_time / dt)
+    write_interval = write_interval or steps
+    names = "xyz"
+    Lx, Ly, Lz = L
+    pts = [(0, 0, 0), (Lx, 0, 0), (Lx, Ly, 0), (0, Ly, 0),
+           (0, 0, Lz), (Lx, 0, Lz), (Lx, Ly, Lz), (0, Ly, Lz)]
+    faces = {
+        "x": ("(0 4 7 3)", "(1 2 6 5)"),
+        "y": ("(0 1 5 4)", "(3 7 6 2)"),
+        "z": ("(0 3 2 1)", "(4 5 6 7)"),
+    }
+    bnd = []
+    for k, kind in zip(names, kinds):
+        lo, hi = faces[k]
+        if kind == "cyclic":
+            bnd.append(f"{k}Min {{ type cyclic; neighbourPatch {k}Max; "
+                       f"faces ({lo}); }}")
+            bnd.append(f"{k}Max {{ type cyclic; neighbourPatch {k}Min; "
+                       f"faces ({hi}); }}")
+        else:
+            bnd.append(f"{k}Min {{ type wall; faces ({lo}); }}")
+            bnd.append(f"{k}Max {{ type wall; faces ({hi}); }}")
+    foamfile(case / "system/blockMeshDict", "dictionary", "system",
+             "blockMeshDict",
+             "scale 1;\nvertices (" + " ".join(vec(p) for p in pts) + ");\n"
+             f"blocks (hex (0 1 2 3 4 5 6 7) ({n[0]} {n[1]} {n[2]}) "
+             "simpleGrading (1 1 1));\nboundary\n(\n    "
+             + "\n    ".join(bnd) + "\n);\n")
+
+    foamfile(case / "system/controlDict", "dictionary", "system",
+             "controlDict",
+             f"application aggloPimpleFoam;\nstartFrom latestTime;\n"
+             f"startTime 0;\nstopAt endTime;\nendTime {end_time!r};\n"
+             f"deltaT {dt!r};\nwriteControl timeStep;\n"
+             f"writeInterval {write_interval};\npurgeWrite 0;\n"
+             f"writeFormat {write_format};\nwritePrecision 17;\n"
+             "writeCompression off;\ntimeFormat general;\n"
+             "timePrecision 12;\nrunTimeModifiable false;\n")
+    foamfile(case / "system/fvSchemes", "dictionary", "system", "fvSchemes",
+             "ddtSchemes { default Euler; }\n"
+             "gradSchemes { default Gauss linear; }\n"
+             "divSchemes { default none; div(phi,U) Gauss linear;\n"
+             "    div((nuEff*dev2(T(grad(U))))) Gauss linear; }\n"
+             "laplacianSchemes { default Gauss linear corrected; }\n"
+             "interpolationSchemes { default linear; }\n"
+             "snGradSchemes { default corrected; }\n")
+    foamfile(case / "system/fvSolution", "dictionary", "system",
+             "fvSolution",
+             "solvers { p { solver PCG; preconditioner DIC; tolerance 1e-8;"
+             " relTol 0; } pFinal { $p; }\n"
+             "\"(U|UFinal)\" { solver PBiCGStab; preconditioner DILU;"
+             " tolerance 1e-8; relTol 0; } }\n"
+             "PIMPLE { nOuterCorrectors 1; nCorrectors 1;"
+             " nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0;"
+             " frozenFlow yes; }\n")
+    foamfile(case / "system/decomposeParDict", "dictionary", "system",
+             "decomposeParDict",
+             f"numberOfSubdomains {decompose[0]*decompose[1]*decompose[2]};"
+             f"\nmethod simple;\ncoeffs {{ n ({decompose[0]} {decompose[1]}"
+             f" {decompose[2]}); }}\n")
+    foamfile(case / "constant/transportProperties", "dictionary",
+             "constant", "transportProperties",
+             "transportModel Newtonian;\nnu 1.5e-5;\nrhoInf 1.2;\n")
+    foamfile(case / "constant/turbulenceProperties", "dictionary",
+             "constant", "turbulenceProperties", "simulationType laminar;\n")
+    foamfile(case / "constant/g", "uniformDimensionedVectorField",
+             "constant", "g", "dimensions [0 1 -2 0 0 0 0];\n"
+             "value (0 0 0);\n")
+
+    ub, pb = [], []
+    for k, kind in zip(names, kinds):
+        for side in ("Min", "Max"):
+            if kind == "cyclic":
+                ub.append(f"{k}{side} {{ type cyclic; }}")
+                pb.append(f"{k}{side} {{ type cyclic; }}")
+            else:
+                uw = (wall_velocity or {}).get(f"{k}{side}", (0, 0, 0))
+                ub.append(f"{k}{side} {{ type fixedValue; "
+                          f"value uniform {vec(uw)}; }}")
+                pb.append(f"{k}{side} {{ type zeroGradient; }}")
+    foamfile(case / "0/U", "volVectorField", "0", "U",
+             "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);"
+             "\nboundaryField\n{\n    " + "\n    ".join(ub) + "\n}\n")
+    foamfile(case / "0/p", "volScalarField", "0", "p",
+             "dimensions [0 2 -2 0 0 0 0];\ninternalField uniform 0;\n"
+             "boundaryField\n{\n    " + "\n    ".join(pb) + "\n}\n")
+
+    walls = f'walls {{ ".*" {WALL} }}'
+    hs = hard_sphere or (
+        "hardSphereCollision\n{\n    active true;\n" + KERNEL
+        + f"    agglomerationModel {agglomeration};\n    {walls}\n}}\n")
+    foamfile(case / "constant/kinematicCloudProperties", "dictionary",
+             "constant", "kinematicCloudProperties",
+             "solution\n{\n    active true;\n    coupled false;\n"
+             "    transient yes;\n    cellValueSourceCorrection off;\n"
+             "    maxCo 1;\n"
+             "    sourceTerms { schemes { U semiImplicit 1; } }\n"
+             "    interpolationSchemes { rho cell; U cellPoint; mu cell; }\n"
+             "    integrationSchemes { U Euler; }\n}\n"
+             "constantProperties { rho0 2200; }\n"
+             "subModels\n{\n    particleForces {}\n"
+             "    injectionModels {}\n    dispersionModel none;\n"
+             "    patchInteractionModel none;\n    surfaceFilmModel none;\n"
+             "    stochasticCollisionModel none;\n}\n"
+             + cloud_extra + hs)
+    write_particles(case, particles)
+    return case
+
+
+def write_particles(case, particles):
+    loc = "0/lagrangian/kinematicCloud"
+    d = Path(case) / loc
+    N = len(particles)
+
+    def field(name, cls, values):
+        foamfile(d / name, cls, loc, name,
+                 f"{N}\n(\n" + "\n".join(values) + "\n)\n")
+
+    field("positions", "Cloud<basicAgglomerateParcel>",
+          [vec(p["x"]) + " -1" for p in particles])
+    lab = lambda key, default: [str(p.get(key, default)) for p in particles]
+    sca = lambda key, default: [repr(float(p.get(key, default)))
+                                for p in particles]
+    field("origProcId", "labelField", ["0"] * N)
+    field("origId", "labelField",
+          [str(p.get("id", i)) for i, p in enumerate(particles)])
+    field("active", "labelField", ["1"] * N)
+    field("typeId", "labelField", ["0"] * N)
+    field("nParticle", "scalarField", ["1"] * N)
+    field("d", "scalarField", sca("d", 12e-6))
+    field("dTarget", "scalarField", sca("d", 12e-6))
+    field("rho", "scalarField", sca("rho", 2200))
+    field("age", "scalarField", ["0"] * N)
+    field("tTurb", "scalarField", ["0"] * N)
+    field("U", "vectorField", [vec(p["U"]) for p in particles])
+    field("UTurb", "vectorField", ["(0 0 0)"] * N)
+    field("omega", "vectorField",
+          [vec(p.get("omega", (0, 0, 0))) for p in particles])
+    field("nPrimary", "labelField", lab("nPrimary", 1))
+    nextId = 1 + max([int(p.get("id", i)) for i, p in enumerate(particles)]
+                     or [-1])
+    foamfile(Path(case) / "0/uniform/lagrangian/kinematicCloud"
+             / "cloudProperties", "dictionary",
+             "0/uniform/lagrangian/kinematicCloud", "cloudProperties",
+             f"geometry positions;\nprocessor0 {{ particleCount {nextId}; }}")
+
+
+def run_case(case, parallel=0, check=True):
+    """blockMesh, then the solver (serial, or decomposed on N ranks)."""
+    run([foam_bin("blockMesh")], case, "log.blockMesh")
+    if parallel:
+        run([foam_bin("decomposePar"), "-force"], case, "log.decomposePar")
+        # decomposePar writes barycentric coordinates but copies the
+        # uniform cloudProperties that announce the legacy positions file
+        for f in Path(case).glob("processor*/0/uniform/lagrangian/"
+                                 "kinematicCloud/cloudProperties"):
+            f.write_text(f.read_text().replace("geometry positions;",
+                                               "geometry coordinates;"))
+        res = run(["mpirun", "-np", str(parallel), "--oversubscribe",
+                   foam_bin("aggloPimpleFoam"), "-parallel"], case,
+                  "log.aggloPimpleFoam", check=check)
+        if check:
+            run([foam_bin("reconstructPar"), "-latestTime"], case,
+                "log.reconstructPar")
+        return res
+    return run([foam_bin("aggloPimpleFoam")], case, "log.aggloPimpleFoam",
+               check=check)
+
+
+# ----------------------------------------------------------------- reading
+
+_NUM = r"[-+0-9.eE]+"
+
+
+def read_field(path):
+    """An ASCII lagrangian IOField as a list (of floats or tuples)."""
+    text = Path(path).read_text()
+    body = text[text.index("}") + 1:]
+    body = re.sub(r"//.*", "", body)
+    m = re.search(r"(\d+)\s*\{([^}]*)\}", body)
+    if m:  # uniform list N{value}
+        n, v = int(m.group(1)), m.group(2).strip()
+        val = (tuple(float(c) for c in v.strip("()").split())
+               if v.startswith("(") else float(v))
+        return [val] * n
+    m = re.search(r"(\d+)\s*\((.*)\)", body, re.S)
+    if not m:
+        return []
+    inner = m.group(2)
+    if "(" in inner:
+        return [tuple(float(c) for c in t.split())
+                for t in re.findall(r"\(([^()]*)\)", inner)]
+    return [float(c) for c in inner.split()]
+
+
+def cloud_state(case, time):
+    """Dict of field name -> list, keyed by origId order."""
+    d = Path(case) / str(time) / "lagrangian" / "kinematicCloud"
+    out = {}
+    for name in ("U", "omega", "d", "rho", "nPrimary", "origId",
+                 "origProcId", "lastPartnerId", "lastContactTime"):
+        if (d / name).exists():
+            out[name] = read_field(d / name)
+    return out
+
+
+def stats(case):
+    """The rows of stats.dat as dicts (all start-time folders in order)."""
+    base = Path(case) / "postProcessing" / "kinematicCloudHardSphere"
+    rows = []
+    for sub in sorted(base.iterdir(), key=lambda p: float(p.name)):
+        f = sub / "stats.dat"
+        if not f.exists():
+            continue
+        cols = None
+        for line in f.read_text().splitlines():
+            if line.startswith("# Time"):
+                cols = line[2:].split()
+            elif line and not line.startswith("#"):
+                rows.append(dict(zip(cols, map(float, line.split()))))
+    return rows
+
+
+def last_time(case):
+    times = [p.name for p in Path(case).iterdir()
+             if re.fullmatch(_NUM, p.name) and p.name != "0"]
+    return max(times, key=float)

@@ -1,0 +1,379 @@
+"""The hard-sphere agglomerating cloud (HardSphereCloud) in aggloPimpleFoam
+on small scripted cases: frozen fluid at rest, no particle forces, so the
+particles move in straight lines between events.
+
+Independent expectations: the kernel utility hardSphereCollide for pair
+collisions; the smooth-wall formulas of physics.md 7.1 written out here;
+kinetic theory (collision rate of a hard-sphere gas, Haff's cooling law);
+exact equality for restart, repetition and decomposition."""
+
+import json
+import math
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from conftest import foam_bin, run
+from hscase import (KERNEL, box_case, cloud_state, last_time, read_field,
+                    run_case, stats)
+
+D = 12e-6
+L = 1e-4
+C = 0.5 * L
+
+
+def pair_particles(v, theta_deg, gap=1e-6, centre=(C, C, C), spin=None):
+    """Two 12 um primaries approaching along x with relative speed v; the
+    impact parameter gives the angle theta between -u_r and the contact
+    normal."""
+    b = D * math.sin(math.radians(theta_deg))
+    X = D * math.cos(math.radians(theta_deg)) + gap
+    cx, cy, cz = centre
+    p1 = dict(x=(cx - 0.5 * X, cy - 0.5 * b, cz), U=(0.5 * v, 0, 0), id=0)
+    p2 = dict(x=(cx + 0.5 * X, cy + 0.5 * b, cz), U=(-0.5 * v, 0, 0), id=1)
+    if spin:
+        p1["omega"], p2["omega"] = spin
+    return [p1, p2]
+
+
+def contact_positions(p1, p2, R=D):
+    """Positions at first contact for constant velocities (physics.md 6.3)."""
+    x1, x2 = np.array(p1["x"]), np.array(p2["x"])
+    u1, u2 = np.array(p1["U"]), np.array(p2["U"])
+    xr, vr = x2 - x1, u2 - u1
+    a, b, c = vr @ vr, xr @ vr, xr @ xr - R * R
+    t = (-b - math.sqrt(b * b - a * c)) / a
+    return x1 + u1 * t, x2 + u2 * t, t
+
+
+def kernel(tmp, model, p1, p2):
+    """hardSphereCollide on the contact state of the pair."""
+    x1, x2, _ = contact_positions(p1, p2)
+    fmt = lambda t: "(" + " ".join(repr(float(c)) for c in t) + ")"
+    body = "".join(
+        f"particle{k} {{ position {fmt(x)}; U {fmt(p['U'])}; "
+        f"omega {fmt(p.get('omega', (0, 0, 0)))}; d {D}; rho 2200; "
+        f"nPrimary 1; }}\n"
+        for k, (x, p) in ((1, (x1, p1)), (2, (x2, p2))))
+    f = Path(tmp) / "collideDict"
+    f.write_text(KERNEL + f"agglomerationModel {model};\n" + body)
+    res = subprocess.run([foam_bin("hardSphereCollide"), str(f)],
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    return json.loads(res.stdout)
+
+
+PAIRS = {
+    # name: (model, v [m/s], theta [deg], spins)
+    "headOn": ("EAM", 3e-3, 0, None),
+    "oblique": ("EAM", 20e-3, 35, None),
+    "spin": ("MAM", 10e-3, 20, ((0, 0, 800.0), (300.0, 0, -500.0))),
+    "agglomerating": ("EAM", 3e-3, 60, None),
+}
+
+
+def run_pair(case_dir, name, kinds=("wall", "wall", "wall"), shift=0.0,
+             parallel=0, decompose=(1, 1, 1)):
+    model, v, theta, spin = PAIRS[name]
+    parts = pair_particles(v, theta, spin=spin, centre=(C + shift, C, C))
+    if shift:  # wrap into the periodic box
+        for p in parts:
+            p["x"] = ((p["x"][0]) % L, p["x"][1], p["x"][2])
+    box_case(case_dir, L=(L, L, L), n=(4, 4, 4), kinds=kinds, dt=1e-4,
+             end_time=1e-3, particles=parts, agglomeration=model,
+             decompose=decompose)
+    run_case(case_dir, parallel=parallel)
+    return parts, cloud_state(case_dir, last_time(case_dir))
+
+
+def check_against_kernel(case_dir, name, parts, state):
+    model = PAIRS[name][0]
+    ref = kernel(case_dir, model, *pair_particles(*PAIRS[name][1:3],
+                                                  spin=PAIRS[name][3]))
+    if ref["agglomerate"]:
+        ag = ref["agglomerateState"]
+        assert len(state["U"]) == 1 and state["nPrimary"] == [2]
+        assert state["d"][0] == pytest.approx(ag["d"], rel=1e-12)
+        assert state["rho"][0] == pytest.approx(ag["rho"], rel=1e-12)
+        np.testing.assert_allclose(state["U"][0], ag["U"], rtol=0,
+                                   atol=1e-9 * PAIRS[name][1])
+        np.testing.assert_allclose(state["omega"][0], ag["omega"], rtol=0,
+                                   atol=1e-9 * max(1, abs(ag["omega"][2])))
+        return
+    assert len(state["U"]) == 2
+    order = np.argsort(state["origId"])
+    v = PAIRS[name][1]
+    for k, idx in enumerate(order):
+        post = ref["particles"][k]
+        np.testing.assert_allclose(state["U"][idx], post["U"], rtol=0,
+                                   atol=1e-9 * v)
+        np.testing.assert_allclose(state["omega"][idx], post["omega"],
+                                   rtol=0, atol=1e-9 * v / D)
+
+
+@pytest.mark.parametrize("name", list(PAIRS))
+def test_pair_matches_kernel(case_dir, foam_env, name):
+    parts, state = run_pair(case_dir, name)
+    check_against_kernel(case_dir, name, parts, state)
+    s = stats(case_dir)[-1]
+    assert s["nCol"] == 1 and s["nColFirst"] == 1
+    assert s["nAgg"] == (1 if name == "agglomerating" else 0)
+    assert s["nPrimaries"] == 2
+    assert s["mass"] == pytest.approx(2 * 2200 * math.pi * D**3 / 6,
+                                      rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["oblique", "agglomerating"])
+def test_pair_across_cyclic(case_dir, foam_env, name):
+    """The same pair split by the periodic x plane."""
+    parts, state = run_pair(case_dir, name,
+                            kinds=("cyclic", "wall", "wall"), shift=C)
+    assert any(p["x"][0] < 0.1 * L for p in parts)
+    assert any(p["x"][0] > 0.9 * L for p in parts)
+    check_against_kernel(case_dir, name, parts, state)
+    assert stats(case_dir)[-1]["nCol"] == 1
+
+
+@pytest.mark.parametrize("name", ["oblique", "agglomerating"])
+def test_pair_across_processors(case_dir, foam_env, name):
+    """The same pair split by the processor boundary of a 2-rank run."""
+    parts, state = run_pair(case_dir, name, parallel=2,
+                            decompose=(2, 1, 1))
+    check_against_kernel(case_dir, name, parts, state)
+    s = stats(case_dir)[-1]
+    assert s["nCol"] == 1 and s["nPrimaries"] == 2
+
+
+def smooth_wall(U, omega, d, n, en, et, muSt, muKin):
+    """physics.md 7.1, written out independently of the C++ code."""
+    U, omega, n = map(np.asarray, (U, omega, n))
+    un = U @ n
+    uc = U - un * n - 0.5 * d * np.cross(omega, n)
+    s = np.linalg.norm(uc)
+    Jn = -(1 + en) * un
+    if s <= 3.5 * muSt * (1 + en) * abs(un) / (1 + et):
+        J = Jn * n - 2 / 7 * (1 + et) * uc
+    else:
+        J = Jn * n - muKin * Jn * uc / s
+    return U + J, omega - 5 / d * np.cross(n, J)
+
+
+@pytest.mark.parametrize("Ut,spin", [(2e-3, 0.0), (30e-3, 2000.0)])
+def test_wall_impact_at_one_radius(case_dir, foam_env, Ut, spin):
+    """A particle hitting the yMin wall: impulse from the smooth-wall
+    formulas, contact when the centre is one radius from the wall, then
+    straight on from the contact point (wallPositionCorrection reflect)."""
+    U0 = np.array([Ut, -10e-3, 0.0])
+    om0 = np.array([0.0, 0.0, spin])
+    x0 = np.array([C, 0.5 * D + 3.3e-6, C])
+    dt, T = 1e-4, 1e-3
+    box_case(case_dir, L=(L, L, L), particles=[dict(x=x0, U=U0,
+             omega=om0)], dt=dt, end_time=T)
+    run_case(case_dir)
+    state = cloud_state(case_dir, last_time(case_dir))
+    Uref, omref = smooth_wall(U0, om0, D, np.array([0, 1.0, 0]), 0.8, 0.4,
+                              0.3, 0.15)
+    np.testing.assert_allclose(state["U"][0], Uref, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(state["omega"][0], omref, rtol=0,
+                               atol=1e-9 * max(1, np.abs(omref).max()))
+    # contact at h = r: t_c = 3.3e-6/10e-3
+    tc = 3.3e-6 / 10e-3
+    xc = x0 + U0 * tc
+    xend = xc + Uref * (T - tc)
+    x = np.array(read_positions(case_dir))
+    np.testing.assert_allclose(x[0], xend, rtol=0, atol=1e-12)
+    s = stats(case_dir)[-1]
+    assert s["nWall"] == 1 and s["nWallCentre"] == 0
+
+
+def read_positions(case_dir):
+    """Cartesian positions of the last time through the legacy file."""
+    text = (Path(case_dir) / last_time(case_dir) / "lagrangian"
+            / "kinematicCloud" / "positions").read_text()
+    return [tuple(float(c) for c in m.split())
+            for m in re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", text)]
+
+
+# ------------------------------------------------------------------ gases
+
+def gas_particles(N, Lbox, phi, sigma, seed):
+    rng = np.random.default_rng(seed)
+    d = Lbox * (6 * phi / (math.pi * N)) ** (1 / 3)
+    xs = []
+    while len(xs) < N:
+        x = rng.uniform(0, Lbox, 3)
+        if all(np.linalg.norm((x - y + 0.5 * Lbox) % Lbox - 0.5 * Lbox)
+               > 1.05 * d for y in xs):
+            xs.append(x)
+    U = rng.normal(0, sigma, (N, 3))
+    U -= U.mean(axis=0)
+    parts = [dict(x=tuple(x), U=tuple(u), d=d, rho=2200, id=i)
+             for i, (x, u) in enumerate(zip(xs, U))]
+    return parts, d, U
+
+
+def gas_kernel(en):
+    return ("hardSphereCollision\n{\n    active true;\n"
+            "    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.6e9;"
+            " delta0 2e-10; rho0 2200; }\n"
+            f"    particleCollision {{ en {en}; et 1; muSt 0; muKin 0; }}\n"
+            "    agglomerationModel none;\n    walls {}\n}\n")
+
+
+def enskog(phi):
+    return (1 - 0.5 * phi) / (1 - phi) ** 3
+
+
+N_GAS, L_GAS, PHI, SIGMA = 1000, 1e-3, 0.01, 1e-3
+
+
+def test_elastic_gas_collision_rate(case_dir, foam_env):
+    """Elastic frictionless spheres in a periodic box: collisions per unit
+    volume and time = 2 sqrt(pi) n^2 d^2 sigma g(phi) (Enskog factor of
+    Carnahan-Starling)."""
+    parts, d, U = gas_particles(N_GAS, L_GAS, PHI, SIGMA, seed=3)
+    dt, T = 1e-3, 2.0
+    box_case(case_dir, L=(L_GAS,) * 3, n=(5, 5, 5),
+             kinds=("cyclic",) * 3, particles=parts, dt=dt, end_time=T,
+             hard_sphere=gas_kernel(1))
+    run_case(case_dir)
+    rows = stats(case_dir)
+    sigma = math.sqrt((U ** 2).sum() / (3 * N_GAS))
+    n = N_GAS / L_GAS**3
+    rate = 2 * math.sqrt(math.pi) * n**2 * d**2 * sigma * enskog(PHI)
+    expected = rate * L_GAS**3 * T
+    measured = rows[-1]["nCol"]
+    assert measured == pytest.approx(expected, rel=0.05)
+    # energy is conserved by elastic collisions
+    Uend = np.array(cloud_state(case_dir, last_time(case_dir))["U"])
+    assert (Uend**2).sum() == pytest.approx((U**2).sum(), rel=1e-9)
+
+
+def test_inelastic_gas_haff_cooling(case_dir, foam_env):
+    """Inelastic frictionless gas: T^(-1/2) grows linearly in time with
+    slope 1/(tau_H sqrt(T0)), 1/tau_H = f0 (1 - e^2)/6 (Haff's law), where
+    f0 = 4 sqrt(pi) n d^2 sigma0 g(phi) is the initial collision frequency
+    per particle."""
+    en = 0.8
+    parts, d, U = gas_particles(N_GAS, L_GAS, PHI, SIGMA, seed=5)
+    dt, T = 1e-3, 3.0
+    box_case(case_dir, L=(L_GAS,) * 3, n=(5, 5, 5),
+             kinds=("cyclic",) * 3, particles=parts, dt=dt, end_time=T,
+             write_interval=300, hard_sphere=gas_kernel(en))
+    run_case(case_dir)
+    times, Ts = [0.0], [(U**2).sum() / (3 * N_GAS)]
+    for t in sorted((p for p in Path(case_dir).iterdir()
+                     if p.name not in ("0",) and p.name[0].isdigit()),
+                    key=lambda p: float(p.name)):
+        Ut = np.array(cloud_state(case_dir, t.name)["U"])
+        times.append(float(t.name))
+        Ts.append((Ut**2).sum() / (3 * N_GAS))
+    times, Ts = np.array(times), np.array(Ts)
+    slope = np.polyfit(times, Ts ** -0.5, 1)[0]
+    tauH_sim = Ts[0] ** -0.5 / slope
+    n = N_GAS / L_GAS**3
+    f0 = 4 * math.sqrt(math.pi) * n * d**2 * math.sqrt(Ts[0]) * enskog(PHI)
+    tauH = 6 / (f0 * (1 - en**2))
+    assert Ts[-1] / Ts[0] < 0.35  # it really cooled (about one tau_H)
+    assert tauH_sim == pytest.approx(tauH, rel=0.05)
+
+
+# ------------------------------------------- restart, determinism, MPI
+
+def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1)):
+    """200 quartz primaries at a few mm/s in a box periodic in x and z,
+    walls in y: collisions, agglomerates and wall impacts within 40 steps."""
+    rng = np.random.default_rng(11)
+    Lb, N = 2e-4, 200
+    xs = []
+    while len(xs) < N:
+        x = rng.uniform(0.6 * D, Lb - 0.6 * D, 3)
+        if all(np.linalg.norm(x - y) > 1.2 * D for y in xs):
+            xs.append(x)
+    U = rng.normal(0, 5e-3, (N, 3))
+    parts = [dict(x=tuple(x), U=tuple(u), id=i)
+             for i, (x, u) in enumerate(zip(xs, U))]
+    box_case(case_dir, L=(Lb, Lb, Lb), n=(6, 6, 6),
+             kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
+             end_time=end_time, write_interval=write_interval,
+             agglomeration="EAM", decompose=decompose)
+
+
+def final_fields(case_dir, t):
+    d = Path(case_dir) / t / "lagrangian" / "kinematicCloud"
+    return {f.name: f.read_text().split("\n", 16)[-1]
+            for f in sorted(d.iterdir()) if f.name != "positions"}
+
+
+def test_restart_equals_continuous_run(case_dir, foam_env):
+    full = case_dir / "full"
+    agglomerating_gas(full, 4e-3, 20)
+    run_case(full)
+    half = case_dir / "half"
+    agglomerating_gas(half, 2e-3, 20)
+    run_case(half)
+    run([foam_bin("foamDictionary"), "-entry", "endTime", "-set", "0.004",
+         "system/controlDict"], half, "log.foamDictionary")
+    run([foam_bin("aggloPimpleFoam")], half, "log.aggloPimpleFoam.restart")
+    a, b = stats(full)[-1], stats(half)[-1]
+    assert a["nCol"] > 5 and a["nAgg"] > 0 and a["nWall"] > 0
+    assert a == b
+    fa, fb = final_fields(full, "0.004"), final_fields(half, "0.004")
+    assert fa.keys() == fb.keys() and fa == fb
+
+
+def test_same_run_twice_and_parallel_counts(case_dir, foam_env):
+    runs = {}
+    for name, procs in (("a", 0), ("b", 0), ("mpi", 2)):
+        c = case_dir / name
+        agglomerating_gas(c, 4e-3, 40, decompose=(2, 1, 1))
+        run_case(c, parallel=procs)
+        runs[name] = c
+    # repetition: identical output
+    assert final_fields(runs["a"], "0.004") == \
+        final_fields(runs["b"], "0.004")
+    assert stats(runs["a"]) == stats(runs["b"])
+    # decomposition: identical counters every step
+    keys = ("nParticles", "nPrimaries", "nAgglomerates", "nCol",
+            "nColFirst", "nColRepeat", "nColOverlapStart", "nAgg",
+            "nSuppressed", "nSkipSeparating", "nWall", "maxPrimaries")
+    sa, sm = stats(runs["a"]), stats(runs["mpi"])
+    assert len(sa) == len(sm) == 40
+    for ra, rm in zip(sa, sm):
+        assert {k: ra[k] for k in keys} == {k: rm[k] for k in keys}
+        assert rm["mass"] == pytest.approx(ra["mass"], rel=1e-12)
+    assert sa[-1]["nAgg"] > 0
+    # mass and primaries conserved
+    assert sa[-1]["nPrimaries"] == 200
+    assert sa[-1]["mass"] == pytest.approx(sa[0]["mass"], rel=1e-12)
+    assert sa[-1]["nParticles"] == 200 - sa[-1]["nAgg"]
+
+
+# ------------------------------------------------------------ bad input
+
+BAD = {
+    "unknownModel": ("agglomerationModel EAM;", "agglomerationModel EAMX;",
+                     "EAMX"),
+    "missingCoefficient": ("en 0.97; ", "", "en"),
+    "restitution": ("en 0.97;", "en 1.2;", "en"),
+    "unknownWallModel": ("wallModel smooth;", "wallModel rough;", "rough"),
+}
+
+
+@pytest.mark.parametrize("name", list(BAD))
+def test_bad_input_is_fatal(case_dir, foam_env, name):
+    old, new, word = BAD[name]
+    box_case(case_dir, L=(L, L, L), particles=pair_particles(3e-3, 0),
+             agglomeration="EAM", dt=1e-4, end_time=2e-4)
+    f = case_dir / "constant" / "kinematicCloudProperties"
+    text = f.read_text()
+    assert old in text
+    f.write_text(text.replace(old, new, 1))
+    res = run_case(case_dir, check=False)
+    assert res.returncode != 0
+    assert "FOAM FATAL" in res.stdout
+    assert word in res.stdout.split("FOAM FATAL", 1)[1]
