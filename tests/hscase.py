@@ -50,7 +50,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              kinds=("wall", "wall", "wall"), particles=(), dt=1e-4,
              end_time=1e-3, write_interval=None, hard_sphere="",
              agglomeration="none", write_format="ascii",
-             decompose=(1, 1, 1), wall_velocity=None, cloud_extra=""):
+             decompose=(1, 1, 1), wall_velocity=None, cloud_extra="",
+             forces="{}", gravity=(0, 0, 0)):
     """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id)."""
     case = Path(case)
@@ -121,7 +122,7 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              "constant", "turbulenceProperties", "simulationType laminar;\n")
     foamfile(case / "constant/g", "uniformDimensionedVectorField",
              "constant", "g", "dimensions [0 1 -2 0 0 0 0];\n"
-             "value (0 0 0);\n")
+             f"value {vec(gravity)};\n")
 
     ub, pb = [], []
     for k, kind in zip(names, kinds):
@@ -154,7 +155,7 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              "    interpolationSchemes { rho cell; U cellPoint; mu cell; }\n"
              "    integrationSchemes { U Euler; }\n}\n"
              "constantProperties { rho0 2200; }\n"
-             "subModels\n{\n    particleForces {}\n"
+             "subModels\n{\n    particleForces " + forces + "\n"
              "    injectionModels {}\n    dispersionModel none;\n"
              "    patchInteractionModel none;\n    surfaceFilmModel none;\n"
              "    stochasticCollisionModel none;\n}\n"
