@@ -23,6 +23,7 @@ Usage (after ./Allwmake; about 3 minutes on one core):
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 import time
@@ -41,6 +42,7 @@ D, DT, STEPS = 12e-6, 1.1e-5, 21
 
 
 def make_case(case, N, particles=True):
+    shutil.rmtree(case, ignore_errors=True)
     Lb = (N / N_DENSITY) ** (1 / 3)
     nc = max(2, round((N / PER_CELL) ** (1 / 3)))
     rng = np.random.default_rng(1)
