@@ -919,7 +919,9 @@ void Foam::HardSphereCloud<CloudType>::statistics
     const scalar energyGain,
     scalarField& colBin,
     scalarField& colFirstBin,
-    scalarField& aggBin
+    scalarField& aggBin,
+    const scalar mass0,
+    const label nPrimaries0
 )
 {
     hardSphereStatistics& st = *stats_;
@@ -994,6 +996,31 @@ void Foam::HardSphereCloud<CloudType>::statistics
     reduce(sumD, sumOp<scalar>());
     reduce(Dmax, maxOp<scalar>());
     reduce(mass, sumOp<scalar>());
+
+    // Audit of the collision stage (mass0 < 0: the stage did not run)
+    if
+    (
+        mass0 >= 0
+     && (
+            nPrimaries != nPrimaries0
+         || mag(mass - mass0) > 1e-11*max(mass0, VSMALL)
+        )
+    )
+    {
+        if (Cloud<parcelType>::debug)
+        {
+            FatalErrorInFunction
+                << "Particle mass or primaries not conserved by the"
+                << " collision stage: mass " << mass0 << " -> " << mass
+                << ", primaries " << nPrimaries0 << " -> " << nPrimaries
+                << exit(FatalError);
+        }
+        WarningInFunction
+            << "Particle mass or primaries not conserved by the"
+            << " collision stage: mass " << mass0 << " -> " << mass
+            << ", primaries " << nPrimaries0 << " -> " << nPrimaries
+            << endl;
+    }
 
     if (profiles)
     {
@@ -1136,11 +1163,12 @@ void Foam::HardSphereCloud<CloudType>::motion
     scalarField colFirstBin(nBins, Zero);
     scalarField aggBin(nBins, Zero);
 
-    // Stage 2: collisions, agglomeration, walls
+    // Stage 2: collisions, agglomeration, walls; the mass and primaries
+    // before it are compared with the statistics pass after it
+    scalar mass0 = -1;
+    label nPrimaries0 = -1;
     if (active_)
     {
-        scalar mass0, mass1;
-        label nPrimaries0, nPrimaries1;
         audit(mass0, nPrimaries0);
 
         collide(counts, sumDeltaL, energyGain, colBin, colFirstBin, aggBin);
@@ -1175,32 +1203,6 @@ void Foam::HardSphereCloud<CloudType>::motion
         }
 
         this->updateCellOccupancy();
-
-        audit(mass1, nPrimaries1);
-
-        if
-        (
-            nPrimaries1 != nPrimaries0
-         || mag(mass1 - mass0) > 1e-11*max(mass0, VSMALL)
-        )
-        {
-            if (Cloud<parcelType>::debug)
-            {
-                FatalErrorInFunction
-                    << "Particle mass or primaries not conserved by the"
-                    << " collision stage: mass " << mass0 << " -> " << mass1
-                    << ", primaries " << nPrimaries0 << " -> " << nPrimaries1
-                    << exit(FatalError);
-            }
-            else
-            {
-                WarningInFunction
-                    << "Particle mass or primaries not conserved by the"
-                    << " collision stage: mass " << mass0 << " -> " << mass1
-                    << ", primaries " << nPrimaries0 << " -> " << nPrimaries1
-                    << endl;
-            }
-        }
     }
     else
     {
@@ -1209,7 +1211,11 @@ void Foam::HardSphereCloud<CloudType>::motion
 
     const scalar collisionTime = timer.timeIncrement();
 
-    statistics(counts, sumDeltaL, energyGain, colBin, colFirstBin, aggBin);
+    statistics
+    (
+        counts, sumDeltaL, energyGain, colBin, colFirstBin, aggBin,
+        mass0, nPrimaries0
+    );
 
     Info<< "    Hard-sphere wall-clock time: tracking "
         << returnReduce(trackingTime, maxOp<scalar>())
