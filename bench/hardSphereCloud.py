@@ -56,7 +56,7 @@ def make_case(case, N, particles=True):
                     particles=parts, dt=DT, end_time=STEPS * DT,
                     agglomeration="EAM",
                     forces="{ sphereDrag; gravity; }",
-                    gravity=(0, -9.81, 0),
+                    gravity=(0, -9.81, 0), rotation=True,
                     hard_sphere="hardSphereCollision\n{\n    active true;\n"
                     + hscase.KERNEL + "    agglomerationModel EAM;\n"
                     "    walls {}\n}\n")

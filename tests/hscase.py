@@ -51,9 +51,14 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              end_time=1e-3, write_interval=None, hard_sphere="",
              agglomeration="none", write_format="ascii",
              decompose=(1, 1, 1), wall_velocity=None, cloud_extra="",
-             forces="{}", gravity=(0, 0, 0)):
+             forces="{}", gravity=(0, 0, 0), rotation=False,
+             dispersion="dispersionModel none;", coupled=False,
+             turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2):
     """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
-    particles: dicts with x, U, d (optional omega, rho, nPrimary, id)."""
+    particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
+    rotation: the cloud's particleRotation switch; dispersion: the
+    dispersionModel entry (plus its coefficients); turbulence: the body
+    of constant/turbulenceProperties."""
     case = Path(case)
     steps = round(end_time / dt)
     write_interval = write_interval or steps
@@ -117,9 +122,9 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              f" {decompose[2]}); }}\n")
     foamfile(case / "constant/transportProperties", "dictionary",
              "constant", "transportProperties",
-             "transportModel Newtonian;\nnu 1.5e-5;\nrhoInf 1.2;\n")
+             f"transportModel Newtonian;\nnu {nu!r};\nrhoInf {rho_f!r};\n")
     foamfile(case / "constant/turbulenceProperties", "dictionary",
-             "constant", "turbulenceProperties", "simulationType laminar;\n")
+             "constant", "turbulenceProperties", turbulence + "\n")
     foamfile(case / "constant/g", "uniformDimensionedVectorField",
              "constant", "g", "dimensions [0 1 -2 0 0 0 0];\n"
              f"value {vec(gravity)};\n")
@@ -148,17 +153,21 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
         + f"    agglomerationModel {agglomeration};\n    {walls}\n}}\n")
     foamfile(case / "constant/kinematicCloudProperties", "dictionary",
              "constant", "kinematicCloudProperties",
-             "solution\n{\n    active true;\n    coupled false;\n"
+             "solution\n{\n    active true;\n"
+             f"    coupled {'true' if coupled else 'false'};\n"
              "    transient yes;\n    cellValueSourceCorrection off;\n"
              "    maxCo 1;\n"
              "    sourceTerms { schemes { U semiImplicit 1; } }\n"
-             "    interpolationSchemes { rho cell; U cellPoint; mu cell; }\n"
+             "    interpolationSchemes { rho cell; U cellPoint; mu cell;"
+             " curlUcDt cellPoint; }\n"
              "    integrationSchemes { U Euler; }\n}\n"
              "constantProperties { rho0 2200; }\n"
              "subModels\n{\n    particleForces " + forces + "\n"
-             "    injectionModels {}\n    dispersionModel none;\n"
+             "    injectionModels {}\n    " + dispersion + "\n"
              "    patchInteractionModel none;\n    surfaceFilmModel none;\n"
              "    stochasticCollisionModel none;\n}\n"
+             + "particleRotation { active "
+             + ("true" if rotation else "false") + "; }\n"
              + cloud_extra + hs)
     write_particles(case, particles)
     return case

@@ -29,6 +29,7 @@ License
 #include "wallPolyPatch.H"
 #include "HashSet.H"
 #include "clockTime.H"
+#include "fvcCurl.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -168,6 +169,17 @@ void Foam::HardSphereCloud<CloudType>::setModels()
                 << " >= 0 [s] or unlimited" << exit(FatalIOError);
         }
     }
+
+    {
+        const dictionary& rotDict =
+            this->particleProperties().subDict("particleRotation");
+        rotationActive_ = rotDict.get<bool>("active");
+        Info<< "    particleRotation: "
+            << (rotationActive_ ? "fluid torque and spin update" : "off")
+            << endl;
+    }
+
+    randomSeed_ = hsDict_.getOrDefault<label>("randomSeed", 0);
 
     wallContact_ = wallContactNames.getOrDefault
     (
@@ -871,7 +883,15 @@ void Foam::HardSphereCloud<CloudType>::wallContacts
         if (un < 0)
         {
             const vector U0(p.U());
-            wallModels_[patchi].impact(nw, Uw, p.d(), p.U(), p.omega());
+            keyedRandom rnd
+            (
+                randomSeed_, wallRandomStream, p.origProc(), p.origId(),
+                this->db().time().timeIndex(), 2.0
+            );
+            wallModels_[patchi].impact
+            (
+                nw, Uw, p.d(), p.U(), p.omega(), rnd
+            );
             ++counts[hardSphereStatistics::WALL];
 
             if (reflect)
@@ -1095,7 +1115,11 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
     ilDistance_(0),
     stats_(nullptr),
     nWallCentre_(0),
-    stepIndex_(0)
+    stepIndex_(0),
+    rotationActive_(false),
+    curlUcPtr_(nullptr),
+    curlUcInterpPtr_(nullptr),
+    randomSeed_(0)
 {
     if (this->solution().steadyState())
     {
@@ -1126,7 +1150,39 @@ void Foam::HardSphereCloud<CloudType>::evolve()
     {
         typename parcelType::trackingData td(*this);
 
+        // Vorticity for the spin update (injection and motion)
+        if (rotationActive_)
+        {
+            curlUcPtr_.reset
+            (
+                new volVectorField
+                (
+                    IOobject
+                    (
+                        "curlUcDt",
+                        this->db().time().timeName(),
+                        this->mesh(),
+                        IOobject::NO_READ,
+                        IOobject::NO_WRITE,
+                        false
+                    ),
+                    fvc::curl(this->U())
+                )
+            );
+            curlUcInterpPtr_.reset
+            (
+                interpolation<vector>::New
+                (
+                    this->solution().interpolationSchemes(),
+                    curlUcPtr_()
+                ).ptr()
+            );
+        }
+
         this->solve(*this, td);
+
+        curlUcInterpPtr_.clear();
+        curlUcPtr_.clear();
     }
 }
 
@@ -1244,7 +1300,15 @@ bool Foam::HardSphereCloud<CloudType>::hitWallCentre
 
     if (((p.U() - Uw) & nw) < 0)
     {
-        wallModels_[pp.index()].impact(nw, Uw, p.d(), p.U(), p.omega());
+        keyedRandom rnd
+        (
+            randomSeed_, wallRandomStream, p.origProc(), p.origId(),
+            this->db().time().timeIndex(), p.stepFraction()
+        );
+        wallModels_[pp.index()].impact
+        (
+            nw, Uw, p.d(), p.U(), p.omega(), rnd
+        );
         ++nWallCentre_;
     }
 

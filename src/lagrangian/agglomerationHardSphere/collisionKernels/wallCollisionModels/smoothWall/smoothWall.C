@@ -103,7 +103,8 @@ bool Foam::smoothWall::impact
     const vector& Uw,
     const scalar d,
     vector& U,
-    vector& omega
+    vector& omega,
+    keyedRandom&
 ) const
 {
     return smoothImpact(coeffs_, nw, Uw, d, U, omega);

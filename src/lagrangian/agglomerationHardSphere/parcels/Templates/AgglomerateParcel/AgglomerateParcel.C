@@ -28,6 +28,7 @@ License
 #include "AgglomerateParcel.H"
 #include "processorPolyPatch.H"
 #include "wallPolyPatch.H"
+#include "particleKeyedModel.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -67,6 +68,47 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+template<class TrackCloudType>
+void Foam::AgglomerateParcel<ParcelType>::calcDispersion
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar dt
+)
+{
+    particleKeyedModel* keyed =
+        dynamic_cast<particleKeyedModel*>(&cloud.dispersion());
+
+    if (keyed)
+    {
+        keyed->setParticleKey
+        (
+            this->origProc(),
+            this->origId(),
+            this->stepFraction()
+        );
+    }
+
+    ParcelType::calcDispersion(cloud, td, dt);
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+void Foam::AgglomerateParcel<ParcelType>::calc
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar dt
+)
+{
+    ParcelType::calc(cloud, td, dt);
+
+    cloud.updateSpin(*this, td, dt);
+}
+
 
 template<class ParcelType>
 template<class TrackCloudType>

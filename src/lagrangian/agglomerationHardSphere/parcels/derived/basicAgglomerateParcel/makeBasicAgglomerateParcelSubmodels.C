@@ -35,6 +35,10 @@ License
 #include "makeParcelStochasticCollisionModels.H"
 #include "makeParcelSurfaceFilmModels.H"
 
+#include "SchillerNaumannDragForce.H"
+#include "RotationLiftForce.H"
+#include "PozorskiApteDispersion.H"
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeParcelCloudFunctionObjects(basicAgglomeratingCloud);
@@ -46,6 +50,11 @@ makeParcelInjectionModels(basicAgglomeratingCloud);
 makeParcelPatchInteractionModels(basicAgglomeratingCloud);
 makeParcelStochasticCollisionModels(basicAgglomeratingCloud);
 makeParcelSurfaceFilmModels(basicAgglomeratingCloud);
+
+// Sub-models of this library
+makeParticleForceModelType(SchillerNaumannDragForce, basicAgglomeratingCloud);
+makeParticleForceModelType(RotationLiftForce, basicAgglomeratingCloud);
+makeDispersionModelType(PozorskiApteDispersion, basicAgglomeratingCloud);
 
 
 // ************************************************************************* //

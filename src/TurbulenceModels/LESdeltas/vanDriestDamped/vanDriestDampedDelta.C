@@ -1,0 +1,169 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "vanDriestDampedDelta.H"
+#include "wallFvPatch.H"
+#include "wallDistData.H"
+#include "wallPointYPlus.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace LESModels
+{
+    defineTypeNameAndDebug(vanDriestDampedDelta, 0);
+    addToRunTimeSelectionTable(LESdelta, vanDriestDampedDelta, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::LESModels::vanDriestDampedDelta::calcDelta()
+{
+    const fvMesh& mesh = turbulenceModel_.mesh();
+
+    const volVectorField& U = turbulenceModel_.U();
+    const tmp<volScalarField> tnu = turbulenceModel_.nu();
+    const volScalarField& nu = tnu();
+    const tmp<volScalarField> tnut = turbulenceModel_.nut();
+
+    // Viscous length nu/u_tau at the wall faces
+    volScalarField ystar
+    (
+        IOobject
+        (
+            "ystar",
+            mesh.time().constant(),
+            mesh
+        ),
+        mesh,
+        dimensionedScalar("ystar", dimLength, GREAT)
+    );
+
+    const fvPatchList& patches = mesh.boundary();
+    volScalarField::Boundary& ystarBf = ystar.boundaryFieldRef();
+
+    forAll(patches, patchi)
+    {
+        if (isA<wallFvPatch>(patches[patchi]))
+        {
+            const fvPatchVectorField& Uw = U.boundaryField()[patchi];
+            const scalarField& nuw = nu.boundaryField()[patchi];
+            const scalarField& nutw = tnut().boundaryField()[patchi];
+
+            ystarBf[patchi] =
+                nuw/sqrt((nuw + nutw)*mag(Uw.snGrad()) + VSMALL);
+        }
+    }
+
+    // Wall distance and the nearest wall's ystar, up to y+ = 500
+    const scalar cutOff = wallPointYPlus::yPlusCutOff;
+    wallPointYPlus::yPlusCutOff = 500;
+    wallDistData<wallPointYPlus> y(mesh, ystar);
+    wallPointYPlus::yPlusCutOff = cutOff;
+
+    delta_ =
+        static_cast<const volScalarField&>(geometricDelta_())
+       *(scalar(1) - exp(-y/ystar/Aplus_));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::LESModels::vanDriestDampedDelta::vanDriestDampedDelta
+(
+    const word& name,
+    const turbulenceModel& turbulence,
+    const dictionary& dict
+)
+:
+    LESdelta(name, turbulence),
+    geometricDelta_
+    (
+        LESdelta::New
+        (
+            IOobject::groupName("geometricDelta", turbulence.U().group()),
+            turbulence,
+            dict.subDict(type() + "Coeffs")
+        )
+    ),
+    Aplus_
+    (
+        dict.subDict(type() + "Coeffs").getOrDefault<scalar>("Aplus", 25)
+    ),
+    calcInterval_
+    (
+        dict.subDict(type() + "Coeffs").getOrDefault<label>
+        (
+            "calcInterval",
+            1
+        )
+    )
+{
+    if (Aplus_ <= 0 || calcInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict.subDict(type() + "Coeffs"))
+            << "Out of range: Aplus " << Aplus_ << ", calcInterval "
+            << calcInterval_ << ". Valid ranges: Aplus > 0,"
+            << " calcInterval >= 1" << exit(FatalIOError);
+    }
+
+    Info<< "    vanDriestDamped delta: Delta_geo (1 - exp(-y+/A+)), A+ = "
+        << Aplus_ << endl;
+
+    delta_ = geometricDelta_();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::LESModels::vanDriestDampedDelta::read(const dictionary& dict)
+{
+    const dictionary& coeffsDict = dict.subDict(type() + "Coeffs");
+
+    geometricDelta_().read(coeffsDict);
+    coeffsDict.readIfPresent<scalar>("Aplus", Aplus_);
+    coeffsDict.readIfPresent<label>("calcInterval", calcInterval_);
+
+    calcDelta();
+}
+
+
+void Foam::LESModels::vanDriestDampedDelta::correct()
+{
+    if (turbulenceModel_.mesh().time().timeIndex() % calcInterval_ == 0)
+    {
+        geometricDelta_().correct();
+        calcDelta();
+    }
+}
+
+
+// ************************************************************************* //
