@@ -53,7 +53,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              decompose=(1, 1, 1), wall_velocity=None, cloud_extra="",
              forces="{}", gravity=(0, 0, 0), rotation=False,
              dispersion="dispersionModel none;", coupled=False,
-             turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2):
+             turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2,
+             frozen=True, tol=1e-8, source_scheme="semiImplicit 1"):
     """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
     rotation: the cloud's particleRotation switch; dispersion: the
@@ -108,13 +109,13 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              "snGradSchemes { default corrected; }\n")
     foamfile(case / "system/fvSolution", "dictionary", "system",
              "fvSolution",
-             "solvers { p { solver PCG; preconditioner DIC; tolerance 1e-8;"
-             " relTol 0; } pFinal { $p; }\n"
+             "solvers { p { solver PCG; preconditioner DIC;"
+             f" tolerance {tol!r}; relTol 0; }} pFinal {{ $p; }}\n"
              "\"(U|UFinal)\" { solver PBiCGStab; preconditioner DILU;"
-             " tolerance 1e-8; relTol 0; } }\n"
-             "PIMPLE { nOuterCorrectors 1; nCorrectors 1;"
+             f" tolerance {tol!r}; relTol 0; }} }}\n"
+             "PIMPLE { nOuterCorrectors 1; nCorrectors 2;"
              " nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0;"
-             " frozenFlow yes; }\n")
+             f" frozenFlow {'yes' if frozen else 'no'}; }}\n")
     foamfile(case / "system/decomposeParDict", "dictionary", "system",
              "decomposeParDict",
              f"numberOfSubdomains {decompose[0]*decompose[1]*decompose[2]};"
@@ -157,7 +158,7 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              f"    coupled {'true' if coupled else 'false'};\n"
              "    transient yes;\n    cellValueSourceCorrection off;\n"
              "    maxCo 1;\n"
-             "    sourceTerms { schemes { U semiImplicit 1; } }\n"
+             "    sourceTerms { schemes { U " + source_scheme + "; } }\n"
              "    interpolationSchemes { rho cell; U cellPoint; mu cell;"
              " curlUcDt cellPoint; }\n"
              "    integrationSchemes { U Euler; }\n}\n"
@@ -171,6 +172,24 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              + cloud_extra + hs)
     write_particles(case, particles)
     return case
+
+
+def write_internal_U(case, L, n, func, name="U"):
+    """Replace the internal field of 0/U by func(x, y, z) at the cell
+    centres of the uniform box mesh (blockMesh order: x fastest)."""
+    path = Path(case) / "0" / name
+    text = path.read_text()
+    vals = []
+    for k in range(n[2]):
+        for j in range(n[1]):
+            for i in range(n[0]):
+                x = ((i + 0.5) * L[0] / n[0], (j + 0.5) * L[1] / n[1],
+                     (k + 0.5) * L[2] / n[2])
+                vals.append(vec(func(*x)))
+    field = (f"internalField nonuniform List<vector>\n{len(vals)}\n(\n"
+             + "\n".join(vals) + "\n);")
+    text = re.sub(r"internalField\s+uniform\s*\([^)]*\);", field, text)
+    path.write_text(text)
 
 
 def write_particles(case, particles):
