@@ -54,7 +54,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              forces="{}", gravity=(0, 0, 0), rotation=False,
              dispersion="dispersionModel none;", coupled=False,
              turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2,
-             frozen=True, tol=1e-8, source_scheme="semiImplicit 1"):
+             frozen=True, tol=1e-8, source_scheme="semiImplicit 1",
+             patch_interaction="patchInteractionModel none;"):
     """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
     rotation: the cloud's particleRotation switch; dispersion: the
@@ -165,7 +166,7 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              "constantProperties { rho0 2200; }\n"
              "subModels\n{\n    particleForces " + forces + "\n"
              "    injectionModels {}\n    " + dispersion + "\n"
-             "    patchInteractionModel none;\n    surfaceFilmModel none;\n"
+             "    " + patch_interaction + "\n    surfaceFilmModel none;\n"
              "    stochasticCollisionModel none;\n}\n"
              + "particleRotation { active "
              + ("true" if rotation else "false") + "; }\n"

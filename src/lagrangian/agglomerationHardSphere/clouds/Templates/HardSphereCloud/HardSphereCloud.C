@@ -30,6 +30,7 @@ License
 #include "HashSet.H"
 #include "clockTime.H"
 #include "fvcCurl.H"
+#include "particleKeyedModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -893,6 +894,13 @@ void Foam::HardSphereCloud<CloudType>::wallContacts
                 nw, Uw, p.d(), p.U(), p.omega(), rnd
             );
             ++counts[hardSphereStatistics::WALL];
+
+            const particleKeyedModel* keyed =
+                dynamic_cast<const particleKeyedModel*>(&this->dispersion());
+            if (keyed && keyed->reflectAtWalls())
+            {
+                particleKeyedModel::reflect(p.UTurb(), nw);
+            }
 
             if (reflect)
             {

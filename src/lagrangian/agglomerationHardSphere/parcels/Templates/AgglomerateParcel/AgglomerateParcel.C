@@ -193,9 +193,25 @@ bool Foam::AgglomerateParcel<ParcelType>::hitPatch
         return true;
     }
 
-    if (isA<wallPolyPatch>(pp) && cloud.hitWallCentre(p, pp))
+    if (isA<wallPolyPatch>(pp))
     {
-        return true;
+        // The SGS velocity seen is reflected like the particle velocity
+        const particleKeyedModel* keyed =
+            dynamic_cast<const particleKeyedModel*>(&cloud.dispersion());
+
+        if (keyed && keyed->reflectAtWalls())
+        {
+            particleKeyedModel::reflect
+            (
+                p.UTurb(),
+                -pp.faceNormals()[pp.whichFace(p.face())]
+            );
+        }
+
+        if (cloud.hitWallCentre(p, pp))
+        {
+            return true;
+        }
     }
 
     return ParcelType::hitPatch(cloud, td);

@@ -60,6 +60,7 @@ Foam::PozorskiApteDispersion<CloudType>::PozorskiApteDispersion
     CT_(this->coeffDict().template getOrDefault<scalar>("CT", 1)),
     betaC_(this->coeffDict().template getOrDefault<scalar>("betaC", 1)),
     seed_(this->coeffDict().template getOrDefault<label>("seed", 0)),
+    wallReflection_(this->coeffDict().template get<bool>("wallReflection")),
     sigmaPtr_(nullptr),
     deltaPtr_(nullptr)
 {
@@ -78,7 +79,7 @@ Foam::PozorskiApteDispersion<CloudType>::PozorskiApteDispersion
         Info<< " (k_sgs = (nu_t/(Ck Delta))^2, Ck " << Ck_ << ")";
     }
     Info<< ", CT " << CT_ << ", betaC " << betaC_ << ", seed " << seed_
-        << endl;
+        << ", wallReflection " << wallReflection_ << endl;
 }
 
 
@@ -95,6 +96,7 @@ Foam::PozorskiApteDispersion<CloudType>::PozorskiApteDispersion
     CT_(dm.CT_),
     betaC_(dm.betaC_),
     seed_(dm.seed_),
+    wallReflection_(dm.wallReflection_),
     sigmaPtr_(nullptr),
     deltaPtr_(nullptr)
 {}
