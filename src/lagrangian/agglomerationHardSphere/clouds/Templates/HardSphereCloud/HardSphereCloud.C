@@ -30,7 +30,6 @@ License
 #include "HashSet.H"
 #include "clockTime.H"
 #include "fvcCurl.H"
-#include "particleKeyedModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -179,6 +178,9 @@ void Foam::HardSphereCloud<CloudType>::setModels()
             << (rotationActive_ ? "fluid torque and spin update" : "off")
             << endl;
     }
+
+    keyedDispersion_ =
+        dynamic_cast<particleKeyedModel*>(&this->dispersion());
 
     randomSeed_ = hsDict_.getOrDefault<label>("randomSeed", 0);
 
@@ -895,9 +897,7 @@ void Foam::HardSphereCloud<CloudType>::wallContacts
             );
             ++counts[hardSphereStatistics::WALL];
 
-            const particleKeyedModel* keyed =
-                dynamic_cast<const particleKeyedModel*>(&this->dispersion());
-            if (keyed && keyed->reflectAtWalls())
+            if (keyedDispersion_ && keyedDispersion_->reflectAtWalls())
             {
                 particleKeyedModel::reflect(p.UTurb(), nw);
             }
@@ -1127,6 +1127,7 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
     rotationActive_(false),
     curlUcPtr_(nullptr),
     curlUcInterpPtr_(nullptr),
+    keyedDispersion_(nullptr),
     randomSeed_(0)
 {
     if (this->solution().steadyState())

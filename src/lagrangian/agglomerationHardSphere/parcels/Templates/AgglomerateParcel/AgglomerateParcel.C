@@ -78,8 +78,7 @@ void Foam::AgglomerateParcel<ParcelType>::calcDispersion
     const scalar dt
 )
 {
-    particleKeyedModel* keyed =
-        dynamic_cast<particleKeyedModel*>(&cloud.dispersion());
+    particleKeyedModel* keyed = cloud.keyedDispersion();
 
     if (keyed)
     {
@@ -196,8 +195,7 @@ bool Foam::AgglomerateParcel<ParcelType>::hitPatch
     if (isA<wallPolyPatch>(pp))
     {
         // The SGS velocity seen is reflected like the particle velocity
-        const particleKeyedModel* keyed =
-            dynamic_cast<const particleKeyedModel*>(&cloud.dispersion());
+        const particleKeyedModel* keyed = cloud.keyedDispersion();
 
         if (keyed && keyed->reflectAtWalls())
         {
