@@ -370,6 +370,15 @@ BAD = {
     "missingCoefficient": ("en 0.97; ", "", "en"),
     "restitution": ("en 0.97;", "en 1.2;", "en"),
     "unknownWallModel": ("wallModel smooth;", "wallModel rough;", "rough"),
+    "ghostAgglomerating": ("agglomerationModel EAM;",
+                           "agglomerationModel EAM; collisionResponse ghost;",
+                           "ghost"),
+    "unknownResponse": ("agglomerationModel EAM;",
+                        "agglomerationModel EAM; collisionResponse gost;",
+                        "gost"),
+    "negativeRelease": ("agglomerationModel EAM;",
+                        "agglomerationModel EAM; encounterRelease -1;",
+                        "encounterRelease"),
 }
 
 
@@ -386,3 +395,62 @@ def test_bad_input_is_fatal(case_dir, foam_env, name):
     assert res.returncode != 0
     assert "FOAM FATAL" in res.stdout
     assert word in res.stdout.split("FOAM FATAL", 1)[1]
+
+
+# ------------------------------------------- ghost contacts and counting
+
+def set_hs(case_dir, entries):
+    """Add entries to the hardSphereCollision dictionary of a box case."""
+    f = case_dir / "constant" / "kinematicCloudProperties"
+    text = f.read_text()
+    old = "agglomerationModel none;"
+    assert old in text
+    f.write_text(text.replace(old, old + " " + entries, 1))
+
+
+@pytest.mark.parametrize("release", ["0.1", "none"])
+def test_ghost_pair_passes_through(case_dir, foam_env, release):
+    """collisionResponse ghost: an oblique pair (30 deg) passes through;
+    counted once as a first contact, then as overlapStart at every step
+    start that finds it overlapping and approaching; velocities unchanged.
+    The last partner is forgotten beyond 1.1 (r1 + r2) (release 0.1) or
+    kept (none)."""
+    v, dt, gap = 3e-3, 1e-4, 1e-6
+    parts = pair_particles(v, 30, gap=gap)
+    box_case(case_dir, L=(L, L, L), particles=parts, dt=dt, end_time=2e-2)
+    set_hs(case_dir, f"collisionResponse ghost; encounterRelease {release};")
+    run_case(case_dir)
+    rows = stats(case_dir)
+    last = rows[-1]
+    # contact at gap/v, closest approach at X/v (X: initial x distance)
+    X = D * math.cos(math.radians(30)) + gap
+    n_overlap = math.floor(X / v / dt) - math.floor(gap / v / dt)
+    assert (last["nCol"], last["nColFirst"], last["nColRepeat"],
+            last["nAgg"]) == (1 + n_overlap, 1, 0, 0)
+    assert last["nColOverlapStart"] == n_overlap
+    st = cloud_state(case_dir, last_time(case_dir))
+    for k, p in enumerate(parts):
+        assert st["U"][k] == pytest.approx(p["U"], abs=1e-15)
+    expect = [-1, -1] if release == "0.1" else [1, 0]
+    assert [int(i) for i in st["lastPartnerId"]] == expect
+
+
+@pytest.mark.parametrize("release", ["0.1", "none"])
+def test_encounter_release_makes_a_new_first_contact(case_dir, foam_env,
+                                                      release):
+    """A head-on pair rebounds, both hit the walls and meet again. After
+    separating beyond 1.1 (r1 + r2) the second meeting is a first contact
+    (cases.md B.4); without release it is a repeat of the last partner
+    (physics.md 6.7, unlimited memory)."""
+    parts = pair_particles(3e-3, 0)
+    box_case(case_dir, L=(L, L, L), particles=parts, dt=1e-4, end_time=0.1)
+    set_hs(case_dir, f"encounterRelease {release};")
+    run_case(case_dir)
+    rows = stats(case_dir)
+    last = rows[-1]
+    assert last["nCol"] >= 2 and last["nWall"] >= 2
+    if release == "0.1":
+        assert (last["nColFirst"], last["nColRepeat"]) == (last["nCol"], 0)
+    else:
+        assert (last["nColFirst"], last["nColRepeat"]) == \
+            (1, last["nCol"] - 1)

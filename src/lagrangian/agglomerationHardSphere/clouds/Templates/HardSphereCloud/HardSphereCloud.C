@@ -69,6 +69,18 @@ Foam::HardSphereCloud<CloudType>::wallPositionCorrectionNames
 });
 
 
+template<class CloudType>
+const Foam::Enum
+<
+    typename Foam::HardSphereCloud<CloudType>::collisionResponseType
+>
+Foam::HardSphereCloud<CloudType>::collisionResponseNames
+({
+    { collisionResponseType::RESPONSE_PHYSICAL, "physical" },
+    { collisionResponseType::RESPONSE_GHOST, "ghost" },
+});
+
+
 // * * * * * * * * * * * * * * * Local Helpers * * * * * * * * * * * * * * * //
 
 namespace Foam
@@ -170,6 +182,36 @@ void Foam::HardSphereCloud<CloudType>::setModels()
         }
     }
 
+    encounterRelease_ = 0.1;
+    if (hsDict_.found("encounterRelease"))
+    {
+        ITstream& is = hsDict_.lookup("encounterRelease");
+        const token t(is);
+        if (t.isWord() && t.wordToken() == "none")
+        {
+            encounterRelease_ = -1;
+        }
+        else if (t.isNumber() && t.number() >= 0)
+        {
+            encounterRelease_ = t.number();
+        }
+        else
+        {
+            FatalIOErrorInFunction(hsDict_)
+                << "encounterRelease " << t << " is not valid: give the"
+                << " relative distance eps >= 0 (the last partner is"
+                << " forgotten beyond (1 + eps)(r1 + r2)) or none"
+                << exit(FatalIOError);
+        }
+    }
+
+    collisionResponse_ = collisionResponseNames.getOrDefault
+    (
+        "collisionResponse",
+        hsDict_,
+        RESPONSE_PHYSICAL
+    );
+
     {
         const dictionary& rotDict =
             this->particleProperties().subDict("particleRotation");
@@ -201,6 +243,19 @@ void Foam::HardSphereCloud<CloudType>::setModels()
     if (active_)
     {
         kernel_.reset(new hardSphereCollisionKernel(hsDict_));
+
+        if
+        (
+            collisionResponse_ == RESPONSE_GHOST
+         && kernel_->agglomeration().type() != "none"
+        )
+        {
+            FatalIOErrorInFunction(hsDict_)
+                << "collisionResponse ghost counts contacts without"
+                << " applying them: set agglomerationModel none (it is "
+                << kernel_->agglomeration().type() << ")"
+                << exit(FatalIOError);
+        }
 
         // One wall model per wall patch
         const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
@@ -241,7 +296,17 @@ void Foam::HardSphereCloud<CloudType>::setModels()
             << ", wallContact " << wallContactNames[wallContact_]
             << ", wallPositionCorrection "
             << wallPositionCorrectionNames[wallPositionCorrection_]
-            << endl;
+            << nl << "    collisionResponse "
+            << collisionResponseNames[collisionResponse_]
+            << ", encounterRelease ";
+        if (encounterRelease_ < 0)
+        {
+            Info<< "none" << endl;
+        }
+        else
+        {
+            Info<< encounterRelease_ << endl;
+        }
     }
 
     stats_.reset
@@ -342,7 +407,12 @@ void Foam::HardSphereCloud<CloudType>::collide
     reduce(dMax, maxOp<scalar>());
     reduce(dxMax, maxOp<scalar>());
 
-    checkInteractionLists(dMax + 2*dxMax);
+    const bool ghost = collisionResponse_ == RESPONSE_GHOST;
+    const bool release = encounterRelease_ >= 0;
+    checkInteractionLists
+    (
+        max(dMax + 2*dxMax, (release ? 1 + encounterRelease_ : 1)*dMax)
+    );
     InteractionLists<parcelType>& il = ilPtr_();
 
     // Parcels per cell (counting sort)
@@ -371,6 +441,9 @@ void Foam::HardSphereCloud<CloudType>::collide
     DynamicList<candidate> candidates;
     pairContact pc;
 
+    // Real parcels whose last partner is still within the release distance
+    boolList partnerNear(n, false);
+
     auto evaluate = [&]
     (
         const label i,
@@ -386,6 +459,25 @@ void Foam::HardSphereCloud<CloudType>::collide
         const vector dxj(xj1 - pj.position0());
         const scalar R = 0.5*(pi.d() + pj.d());
 
+        const globalId idI({pi.origProc(), pi.origId()});
+        const globalId idJ({pj.origProc(), pj.origId()});
+
+        if
+        (
+            release
+         && magSqr(xj1 - x1[i]) <= sqr((1 + encounterRelease_)*R)
+        )
+        {
+            if (pi.lastPartner() == labelPair(idJ[0], idJ[1]))
+            {
+                partnerNear[i] = true;
+            }
+            if (j >= 0 && pj.lastPartner() == labelPair(idI[0], idI[1]))
+            {
+                partnerNear[j] = true;
+            }
+        }
+
         if (!pc.find(pi.position0(), dxi, pj.position0(), dxj, R))
         {
             return;
@@ -398,8 +490,6 @@ void Foam::HardSphereCloud<CloudType>::collide
         c.refCell = refCell;
         c.refIndex = refIndex;
 
-        const globalId idI({pi.origProc(), pi.origId()});
-        const globalId idJ({pj.origProc(), pj.origId()});
         const bool iLow = lessId(idI, idJ);
         c.lo = iLow ? idI : idJ;
         c.hi = iLow ? idJ : idI;
@@ -496,6 +586,20 @@ void Foam::HardSphereCloud<CloudType>::collide
         }
     }
 
+    // Forget the last partners that moved beyond the release distance
+    // (the categories of this step's events are already set)
+    if (release)
+    {
+        forAll(parcels, i)
+        {
+            if (!partnerNear[i] && parcels[i]->lastPartnerId() >= 0)
+            {
+                parcels[i]->lastPartnerProc() = -1;
+                parcels[i]->lastPartnerId() = -1;
+            }
+        }
+    }
+
     // Referred parcels by index, for applying events
     List<List<const parcelType*>> referredPtrs(ril.size());
     forAll(ril, refCelli)
@@ -576,7 +680,7 @@ void Foam::HardSphereCloud<CloudType>::collide
             if (Pstream::master()) ++counts[hs::SKIP_SEPARATING];
             continue;
         }
-        if (taken.found(e.lo) || taken.found(e.hi))
+        if (!ghost && (taken.found(e.lo) || taken.found(e.hi)))
         {
             if (Pstream::master()) ++counts[hs::SUPPRESSED];
             continue;
@@ -592,10 +696,76 @@ void Foam::HardSphereCloud<CloudType>::collide
 
     collisionOutcome outcome;
 
+    // Ghost mode: (pair, real side) already counted, against a second
+    // periodic image of the same pair
+    HashSet<pairKey, pairKey::Hash<>> ghostDone;
+
     for (const candidate& c : candidates)
     {
         if (c.separating || !accepted.found(key(c.lo, c.hi)))
         {
+            continue;
+        }
+
+        if (ghost)
+        {
+            // Count once per pair where the lower-id partner is real;
+            // both real partners remember each other
+            parcelType& pi = *parcels[c.i];
+            parcelType* pjRealPtr = c.j >= 0 ? parcels[c.j] : nullptr;
+            const parcelType& pj =
+                c.j >= 0
+              ? *parcels[c.j]
+              : *referredPtrs[c.refCell][c.refIndex];
+            const point& xj1 =
+                c.j >= 0 ? x1[c.j] : referredX1[c.refCell][c.refIndex];
+
+            const globalId idI({pi.origProc(), pi.origId()});
+            const globalId idJ({pj.origProc(), pj.origId()});
+            if (!ghostDone.insert(key(idI, idJ)))
+            {
+                continue;
+            }
+
+            const bool iLow = c.lo == idI;
+            if (iLow || pjRealPtr)
+            {
+                ++counts[hs::COL];
+                ++counts[hs::COL_FIRST + c.category];
+
+                if (stats_->profiles())
+                {
+                    const point xic
+                    (
+                        pi.position0() + c.s*(x1[c.i] - pi.position0())
+                    );
+                    const point xjc
+                    (
+                        pj.position0() + c.s*(xj1 - pj.position0())
+                    );
+                    const vector n12((xjc - xic)/mag(xjc - xic));
+                    const label b = stats_->bin(xic + 0.5*pi.d()*n12);
+                    if (b >= 0)
+                    {
+                        colBin[b] += 1;
+                        if (c.category == hs::FIRST)
+                        {
+                            colFirstBin[b] += 1;
+                        }
+                    }
+                }
+            }
+
+            const scalar tc = tStart + c.s*dt;
+            pi.lastPartnerProc() = idJ[0];
+            pi.lastPartnerId() = idJ[1];
+            pi.lastContactTime() = tc;
+            if (pjRealPtr)
+            {
+                pjRealPtr->lastPartnerProc() = idI[0];
+                pjRealPtr->lastPartnerId() = idI[1];
+                pjRealPtr->lastContactTime() = tc;
+            }
             continue;
         }
 
@@ -1115,6 +1285,8 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
     active_(false),
     overlapTreatment_(OVERLAP_NONE),
     encounterMemory_(VGREAT),
+    encounterRelease_(0.1),
+    collisionResponse_(RESPONSE_PHYSICAL),
     wallContact_(WALL_RADIUS),
     wallPositionCorrection_(WALLPOS_REFLECT),
     kernel_(nullptr),

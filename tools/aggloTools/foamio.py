@@ -1,0 +1,207 @@
+"""Minimal OpenFOAM file input/output for the tutorials (ASCII only):
+flat dictionaries, volume-field internal values, lagrangian fields of a
+cloud, and the stats.dat of a hard-sphere cloud."""
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
+| agglomerationHardSphere                                                     |
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    location    "{loc}";
+    object      {obj};
+}}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+"""
+
+
+def _strip_comments(text):
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return re.sub(r"//[^\n]*", "", text)
+
+
+def _value(tok):
+    try:
+        v = float(tok)
+        return int(v) if re.fullmatch(r"[-+]?\d+", tok) else v
+    except ValueError:
+        return tok
+
+
+def parse_dict(text):
+    """Parse a dictionary of `key value;` entries and `name { ... }`
+    sub-dictionaries (no lists, macros or directives) into a dict."""
+    tokens = re.findall(r'"[^"]*"|[{};]|[^\s{};]+', _strip_comments(text))
+    pos = 0
+
+    def block():
+        nonlocal pos
+        out = {}
+        while pos < len(tokens):
+            tok = tokens[pos]
+            if tok == "}":
+                pos += 1
+                return out
+            key = tok.strip('"')
+            pos += 1
+            if tokens[pos] == "{":
+                pos += 1
+                out[key] = block()
+                continue
+            vals = []
+            while tokens[pos] != ";":
+                vals.append(_value(tokens[pos]))
+                pos += 1
+            pos += 1
+            out[key] = vals[0] if len(vals) == 1 else vals
+        return out
+
+    d = block()
+    d.pop("FoamFile", None)
+    return d
+
+
+def read_dict(path):
+    return parse_dict(Path(path).read_text())
+
+
+def write_foamfile(path, cls, loc, obj, body):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(HEADER.format(cls=cls, loc=loc, obj=obj) + body
+                    + "\n\n// " + "*" * 73 + " //\n")
+
+
+def _vec(v):
+    return "(" + " ".join(repr(float(c)) for c in v) + ")"
+
+
+def set_internal_vector_field(path, values):
+    """Replace the internalField of a volVectorField file by values (n, 3)."""
+    path = Path(path)
+    text = path.read_text()
+    field = ("internalField   nonuniform List<vector>\n%d\n(\n%s\n);"
+             % (len(values), "\n".join(_vec(v) for v in values)))
+    text, n = re.subn(r"internalField\s+uniform\s*\([^)]*\);",
+                      lambda m: field, text)
+    if n != 1:
+        raise ValueError(f"{path}: no uniform internalField to replace")
+    path.write_text(text)
+
+
+def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
+                cloud="kinematicCloud", time="0", ids=None):
+    """Write a complete initial cloud (one particle per parcel) for the
+    basicAgglomerateParcel: the legacy positions file plus every field,
+    with origProcId 0 and origId 0..N-1 (decomposition-independent ids)."""
+    loc = f"{time}/lagrangian/{cloud}"
+    out = Path(case) / loc
+    x = np.asarray(positions, float)
+    N = len(x)
+    zeros = np.zeros((N, 3))
+    U = zeros if U is None else np.asarray(U, float)
+    omega = zeros if omega is None else np.asarray(omega, float)
+    d = np.broadcast_to(np.asarray(d, float), (N,))
+    rho = np.broadcast_to(np.asarray(rho, float), (N,))
+    n_primary = (np.ones(N, int) if n_primary is None
+                 else np.asarray(n_primary, int))
+    ids = np.arange(N) if ids is None else np.asarray(ids, int)
+
+    def field(name, cls, lines):
+        write_foamfile(out / name, cls, loc, name,
+                       f"{N}\n(\n" + "\n".join(lines) + "\n)")
+
+    vec = lambda a: ["(%.17g %.17g %.17g)" % tuple(r) for r in a]
+    sca = lambda a: ["%.17g" % v for v in a]
+    lab = lambda a: ["%d" % v for v in a]
+    field("positions", "Cloud<basicAgglomerateParcel>",
+          [s + " -1" for s in vec(x)])
+    field("origProcId", "labelField", lab(np.zeros(N, int)))
+    field("origId", "labelField", lab(ids))
+    field("active", "labelField", lab(np.ones(N, int)))
+    field("typeId", "labelField", lab(np.zeros(N, int)))
+    field("nParticle", "scalarField", sca(np.ones(N)))
+    field("d", "scalarField", sca(d))
+    field("dTarget", "scalarField", sca(d))
+    field("rho", "scalarField", sca(rho))
+    field("age", "scalarField", sca(np.zeros(N)))
+    field("tTurb", "scalarField", sca(np.zeros(N)))
+    field("U", "vectorField", vec(U))
+    field("UTurb", "vectorField", vec(zeros))
+    field("omega", "vectorField", vec(omega))
+    field("nPrimary", "labelField", lab(n_primary))
+    write_foamfile(Path(case) / time / "uniform" / "lagrangian" / cloud
+                   / "cloudProperties", "dictionary",
+                   f"{time}/uniform/lagrangian/{cloud}", "cloudProperties",
+                   f"geometry positions;\nprocessor0 {{ particleCount "
+                   f"{int(ids.max()) + 1 if N else 0}; }}")
+
+
+def read_lagrangian(path):
+    """An ASCII lagrangian IOField as a numpy array ((n,) or (n, 3))."""
+    text = Path(path).read_text()
+    body = _strip_comments(text[text.index("}") + 1:])
+    m = re.search(r"(\d+)\s*\{([^}]*)\}", body)
+    if m:  # uniform list N{value}
+        n, v = int(m.group(1)), m.group(2).strip()
+        if v.startswith("("):
+            return np.tile([float(c) for c in v.strip("()").split()],
+                           (n, 1))
+        return np.full(n, float(v))
+    m = re.search(r"(\d+)\s*\((.*)\)", body, re.S)
+    if not m or int(m.group(1)) == 0:
+        return np.zeros(0)
+    inner = m.group(2)
+    if "(" in inner:
+        rows = re.findall(r"\(([^()]*)\)", inner)
+        return np.array([[float(c) for c in r.split()] for r in rows])
+    return np.array([float(c) for c in inner.split()])
+
+
+def read_positions(path):
+    """Cartesian positions from the legacy `positions` file."""
+    text = Path(path).read_text()
+    rows = re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", text)
+    return np.array([[float(c) for c in r.split()] for r in rows])
+
+
+def time_dirs(case):
+    """The time folders of a case (float-sortable names), ascending."""
+    out = []
+    for p in Path(case).iterdir():
+        try:
+            out.append((float(p.name), p))
+        except ValueError:
+            pass
+    return [p for _, p in sorted(out)]
+
+
+def read_stats(case, cloud="kinematicCloud"):
+    """The rows of postProcessing/<cloud>HardSphere/<t>/stats.dat as a dict
+    of numpy arrays. Restarted runs write a new start-time folder; the rows
+    are joined in time order (later folders win at equal times)."""
+    base = Path(case) / "postProcessing" / f"{cloud}HardSphere"
+    cols, rows = None, []
+    for sub in sorted(base.iterdir(), key=lambda p: float(p.name)):
+        f = sub / "stats.dat"
+        if not f.exists():
+            continue
+        t0 = float(sub.name)
+        rows = [r for r in rows if r[0] <= t0 + 1e-12 * max(1, abs(t0))]
+        for line in f.read_text().splitlines():
+            if line.startswith("# Time"):
+                cols = line[2:].split()
+            elif line and not line.startswith("#"):
+                rows.append([float(c) for c in line.split()])
+    if cols is None:
+        raise FileNotFoundError(f"no stats.dat under {base}")
+    arr = np.array(rows)
+    return {c: arr[:, i] for i, c in enumerate(cols)}
