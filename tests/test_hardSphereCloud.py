@@ -454,3 +454,53 @@ def test_encounter_release_makes_a_new_first_contact(case_dir, foam_env,
     else:
         assert (last["nColFirst"], last["nColRepeat"]) == \
             (1, last["nCol"] - 1)
+
+
+# ------------------------------------------------------------ cloud list
+
+def test_two_clouds_share_one_flow(case_dir, foam_env):
+    """constant/cloudProperties clouds (EAMCloud MAMCloud): two one-way
+    clouds with different agglomeration models in one run give, each, the
+    statistics of the same cloud run alone (bit-identical rows)."""
+    single = {}
+    for model in ("EAM", "MAM"):
+        d = case_dir / model
+        agglomerating_gas(d, 4e-3, 40)
+        f = d / "constant" / "kinematicCloudProperties"
+        f.write_text(f.read_text().replace("agglomerationModel EAM;",
+                                           f"agglomerationModel {model};"))
+        run_case(d)
+        single[model] = stats(d)
+        assert single[model][-1]["nAgg"] > 0
+
+    both = case_dir / "both"
+    agglomerating_gas(both, 4e-3, 40)
+    props = (both / "constant" / "kinematicCloudProperties").read_text()
+    for model in ("EAM", "MAM"):
+        name = f"{model}Cloud"
+        (both / "constant" / f"{name}Properties").write_text(
+            props.replace("agglomerationModel EAM;",
+                          f"agglomerationModel {model};")
+            .replace("kinematicCloudProperties", f"{name}Properties"))
+        for sub in ("0/lagrangian", "0/uniform/lagrangian"):
+            shutil.copytree(both / sub / "kinematicCloud", both / sub / name)
+    (both / "constant" / "kinematicCloudProperties").unlink()
+    shutil.rmtree(both / "0" / "lagrangian" / "kinematicCloud")
+    (both / "constant" / "cloudProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object cloudProperties; }\nclouds (EAMCloud MAMCloud);\n")
+    res = run_case(both)
+    assert "Constructing cloud EAMCloud" in res.stdout
+    assert "Constructing cloud MAMCloud" in res.stdout
+    for model in ("EAM", "MAM"):
+        base = both / "postProcessing" / f"{model}CloudHardSphere" / "0"
+        rows = []
+        cols = None
+        for line in (base / "stats.dat").read_text().splitlines():
+            if line.startswith("# Time"):
+                cols = line[2:].split()
+            elif line and not line.startswith("#"):
+                rows.append(dict(zip(cols, map(float, line.split()))))
+        assert rows == single[model]
+    assert single["EAM"][-1]["nCol"] != single["MAM"][-1]["nCol"] or \
+        single["EAM"][-1]["nAgg"] != single["MAM"][-1]["nAgg"]

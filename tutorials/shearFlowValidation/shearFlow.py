@@ -90,7 +90,8 @@ def settings(preset, run):
     c, p = ps["common"], ps[preset]
     gamma, delta = float(c["gammaDot"]), float(c["delta"])
     detect = run == "detect"
-    dt_g = float(c["detectDtGamma"] if detect else c["dtGamma"])
+    dt_g = float(p.get("detectDtGamma", c["detectDtGamma"]) if detect
+                 else c["dtGamma"])
     end_g = float(p["detectEndGamma"] if detect else p["endGamma"])
     steps = round(end_g / dt_g)
     dt = dt_g / gamma

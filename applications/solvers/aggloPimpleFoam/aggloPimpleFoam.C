@@ -31,21 +31,30 @@ Group
 
 Description
     Transient solver for incompressible, laminar or LES flow (PIMPLE) with
-    a Lagrangian particle cloud, derived from pimpleFoam.
+    Lagrangian particle clouds, derived from pimpleFoam.
 
     - Momentum: pimpleFoam plus fvOptions (e.g. meanVelocityForce for a
       constant mass flux) plus the cloud's momentum source
-      (1/rhoInf) cloud.SU(U) when the cloud is coupled (PSI-cell).
+      (1/rhoInf) sum of cloud.SU(U) over the coupled clouds (PSI-cell).
     - Gravity acts on the particles only (constant/g); no body force is
       applied to the fluid.
-    - The cloud is evolved once per step, before the PIMPLE loop, with the
+    - The clouds are evolved once per step, before the PIMPLE loop, with the
       fluid field of the previous step (explicit coupling, as DPMFoam).
     - frozenFlow (PIMPLE dictionary, default no): skip the fluid solve and
       track the particles in the stored velocity field.
 
     Required fields: U, p (kinematic), the turbulence fields of the
     selected model; constant/transportProperties holds nu and rhoInf;
-    constant/<cloud>Properties the cloud.
+    constant/<cloud>Properties each cloud.
+
+    Clouds: -cloud name runs one cloud; otherwise, if
+    constant/cloudProperties exists, its list
+    \verbatim
+        clouds (EAMCloud MAMCloud);
+    \endverbatim
+    names the clouds, which are evolved one after the other in the same
+    flow (e.g. one-way coupled clouds with different models sharing one
+    LES); otherwise the cloud is kinematicCloud.
 
 \*---------------------------------------------------------------------------*/
 
@@ -71,7 +80,8 @@ int main(int argc, char *argv[])
     (
         "cloud",
         "name",
-        "Cloud name (default: kinematicCloud)"
+        "Run this cloud only (default: the list clouds in"
+        " constant/cloudProperties, else kinematicCloud)"
     );
 
     #include "postProcess.H"
@@ -111,9 +121,12 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        // Cloud first, on the previous step's flow (explicit coupling)
+        // Clouds first, on the previous step's flow (explicit coupling)
         mu = laminarTransport.nu()*rhoInfValue;
-        cloud.evolve();
+        forAll(clouds, i)
+        {
+            clouds[i].evolve();
+        }
 
         if (!frozenFlow)
         {
