@@ -482,7 +482,6 @@ def plots(runs, out, a_th, K_ST, n0, gamma):
             ax.plot(r.tg[k0:], rate * (r.t[k0:] - r.t[k0]), "k--",
                     label=r"$\frac{1}{2} K_{ST} n_0^2 V (t - t_0)$")
         else:
-            rate = 0.5 * K_ST * n0**2 * r.V
             ax.plot(r.tg, r.st["nColFirst"], color=col[name],
                     label=f"{name}, first contacts")
     ax.set_xlabel(r"$t\dot\gamma$")
