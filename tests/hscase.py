@@ -290,9 +290,9 @@ def cloud_state(case, time):
     return out
 
 
-def stats(case):
+def stats(case, cloud="kinematicCloud"):
     """The rows of stats.dat as dicts (all start-time folders in order)."""
-    base = Path(case) / "postProcessing" / "kinematicCloudHardSphere"
+    base = Path(case) / "postProcessing" / f"{cloud}HardSphere"
     rows = []
     for sub in sorted(base.iterdir(), key=lambda p: float(p.name)):
         f = sub / "stats.dat"

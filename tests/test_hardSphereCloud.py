@@ -493,14 +493,7 @@ def test_two_clouds_share_one_flow(case_dir, foam_env):
     assert "Constructing cloud EAMCloud" in res.stdout
     assert "Constructing cloud MAMCloud" in res.stdout
     for model in ("EAM", "MAM"):
-        base = both / "postProcessing" / f"{model}CloudHardSphere" / "0"
-        rows = []
-        cols = None
-        for line in (base / "stats.dat").read_text().splitlines():
-            if line.startswith("# Time"):
-                cols = line[2:].split()
-            elif line and not line.startswith("#"):
-                rows.append(dict(zip(cols, map(float, line.split()))))
+        rows = stats(both, cloud=f"{model}Cloud")
         assert rows == single[model]
     assert single["EAM"][-1]["nCol"] != single["MAM"][-1]["nCol"] or \
         single["EAM"][-1]["nAgg"] != single["MAM"][-1]["nAgg"]

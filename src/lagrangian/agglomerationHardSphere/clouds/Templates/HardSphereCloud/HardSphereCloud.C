@@ -459,20 +459,22 @@ void Foam::HardSphereCloud<CloudType>::collide
         const vector dxj(xj1 - pj.position0());
         const scalar R = 0.5*(pi.d() + pj.d());
 
-        const globalId idI({pi.origProc(), pi.origId()});
-        const globalId idJ({pj.origProc(), pj.origId()});
-
         if
         (
             release
+         && (pi.lastPartnerId() >= 0 || (j >= 0 && pj.lastPartnerId() >= 0))
          && magSqr(xj1 - x1[i]) <= sqr((1 + encounterRelease_)*R)
         )
         {
-            if (pi.lastPartner() == labelPair(idJ[0], idJ[1]))
+            if (pi.lastPartner() == labelPair(pj.origProc(), pj.origId()))
             {
                 partnerNear[i] = true;
             }
-            if (j >= 0 && pj.lastPartner() == labelPair(idI[0], idI[1]))
+            if
+            (
+                j >= 0
+             && pj.lastPartner() == labelPair(pi.origProc(), pi.origId())
+            )
             {
                 partnerNear[j] = true;
             }
@@ -482,6 +484,9 @@ void Foam::HardSphereCloud<CloudType>::collide
         {
             return;
         }
+
+        const globalId idI({pi.origProc(), pi.origId()});
+        const globalId idJ({pj.origProc(), pj.origId()});
 
         candidate c;
         c.s = pc.s;
@@ -696,6 +701,36 @@ void Foam::HardSphereCloud<CloudType>::collide
 
     collisionOutcome outcome;
 
+    // Profile bins of an event at the contact point, seen from partner 1
+    auto binEvent = [&]
+    (
+        const point& xc1,
+        const scalar d1,
+        const point& xc2,
+        const label category,
+        const bool agglomerates
+    )
+    {
+        if (!stats_->profiles())
+        {
+            return;
+        }
+        const vector n12((xc2 - xc1)/mag(xc2 - xc1));
+        const label b = stats_->bin(xc1 + 0.5*d1*n12);
+        if (b >= 0)
+        {
+            colBin[b] += 1;
+            if (category == hs::FIRST)
+            {
+                colFirstBin[b] += 1;
+            }
+            if (agglomerates)
+            {
+                aggBin[b] += 1;
+            }
+        }
+    };
+
     // Ghost mode: (pair, real side) already counted, against a second
     // periodic image of the same pair
     HashSet<pairKey, pairKey::Hash<>> ghostDone;
@@ -733,27 +768,14 @@ void Foam::HardSphereCloud<CloudType>::collide
                 ++counts[hs::COL];
                 ++counts[hs::COL_FIRST + c.category];
 
-                if (stats_->profiles())
-                {
-                    const point xic
-                    (
-                        pi.position0() + c.s*(x1[c.i] - pi.position0())
-                    );
-                    const point xjc
-                    (
-                        pj.position0() + c.s*(xj1 - pj.position0())
-                    );
-                    const vector n12((xjc - xic)/mag(xjc - xic));
-                    const label b = stats_->bin(xic + 0.5*pi.d()*n12);
-                    if (b >= 0)
-                    {
-                        colBin[b] += 1;
-                        if (c.category == hs::FIRST)
-                        {
-                            colFirstBin[b] += 1;
-                        }
-                    }
-                }
+                binEvent
+                (
+                    pi.position0() + c.s*(x1[c.i] - pi.position0()),
+                    pi.d(),
+                    pj.position0() + c.s*(xj1 - pj.position0()),
+                    c.category,
+                    false
+                );
             }
 
             const scalar tc = tStart + c.s*dt;
@@ -845,23 +867,7 @@ void Foam::HardSphereCloud<CloudType>::collide
                 ++counts[hs::MAM_CRIT_II];
             }
 
-            if (stats_->profiles())
-            {
-                const vector n12((s2.x - s1.x)/mag(s2.x - s1.x));
-                const label b = stats_->bin(s1.x + 0.5*s1.d*n12);
-                if (b >= 0)
-                {
-                    colBin[b] += 1;
-                    if (c.category == hs::FIRST)
-                    {
-                        colFirstBin[b] += 1;
-                    }
-                    if (outcome.agglomerates)
-                    {
-                        aggBin[b] += 1;
-                    }
-                }
-            }
+            binEvent(s1.x, s1.d, s2.x, c.category, outcome.agglomerates);
         }
 
         if (outcome.agglomerates)
