@@ -462,7 +462,7 @@ void Foam::HardSphereCloud<CloudType>::collide
         if
         (
             release
-         && (pi.lastPartnerId() >= 0 || (j >= 0 && pj.lastPartnerId() >= 0))
+         && (pi.lastPartner()[1] >= 0 || (j >= 0 && pj.lastPartner()[1] >= 0))
          && magSqr(xj1 - x1[i]) <= sqr((1 + encounterRelease_)*R)
         )
         {
