@@ -54,7 +54,12 @@ Description
     \endverbatim
     names the clouds, which are evolved one after the other in the same
     flow (e.g. one-way coupled clouds with different models sharing one
-    LES); otherwise the cloud is kinematicCloud.
+    LES); an empty list means single-phase flow; otherwise the cloud is
+    kinematicCloud.
+
+    couplingScale (optional, in a cloud's solution dictionary, default 1)
+    multiplies that cloud's momentum source: a reduced cloud of N/s
+    particles then loads the fluid like the N of the full case.
 
 \*---------------------------------------------------------------------------*/
 
