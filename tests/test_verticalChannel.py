@@ -116,6 +116,13 @@ def test_seeded_pairs(smoke_runs, np_):
                 assert by_id.get(a) == 1 and by_id.get(b) == 1, (m, k)
         # no released particle agglomerated in 30 steps
         assert (npri > 1).sum() == N_PAIRS // 2
+        # the VTK output of the last time (foamToVTK, ParaView) holds the
+        # same particles
+        import pyvista as pv
+        vtp = sorted((adir / "VTK/lagrangian" / m).glob("*_*.vtp"))[-1]
+        mesh = pv.read(vtp)
+        assert mesh.n_points == N_TOTAL - N_PAIRS // 2
+        assert int(np.asarray(mesh.point_data["nPrimary"]).sum()) == N_TOTAL
 
 
 def test_serial_and_parallel_agree(smoke_runs):
@@ -130,3 +137,37 @@ def test_serial_and_parallel_agree(smoke_runs):
             else:
                 x, y = a[col][-1], b[col][-1]
                 assert abs(x - y) <= 3 * math.sqrt(max(x, y, 1)), (key, col)
+
+
+def test_restart_reproduces_the_agglomeration_stage(smoke_runs, tmp_path):
+    """cases.md A.11: C1 (no random numbers after the release) restarted
+    from its first write of the agglomeration stage (10 of 30 steps)
+    reproduces the counters and the particles of the uninterrupted run."""
+    from conftest import foam_bin, run
+    src = agg_runs(smoke_runs[1])[("C1", "EAM")]
+    case = tmp_path / "restart"
+    shutil.copytree(src, case, ignore=shutil.ignore_patterns("VTK"))
+    times = foamio.time_dirs(case)
+    assert len(times) == 4          # branch time and 3 writes
+    for t in times[2:]:
+        shutil.rmtree(t)
+    for d in case.glob("postProcessing/*HardSphere/*"):
+        if float(d.name) > float(times[1].name):
+            shutil.rmtree(d)
+    (case / "log.aggloPimpleFoam").unlink()
+    run([foam_bin("aggloPimpleFoam")], case, "log.aggloPimpleFoam")
+    assert foamio.time_dirs(case)[-1].name == times[-1].name
+    for m in ("EAM", "MAM"):
+        a, b = foamio.read_stats(src, m), foamio.read_stats(case, m)
+        assert len(b["Time"]) == STEPS_AGG
+        for col in a:
+            if col != "Time":
+                np.testing.assert_allclose(b[col], a[col], rtol=1e-12,
+                                           atol=0, err_msg=f"{m} {col}")
+        for f in ("U", "omega", "nPrimary", "origId"):
+            x = foamio.read_lagrangian(src / times[-1].name / "lagrangian"
+                                       / m / f)
+            y = foamio.read_lagrangian(case / times[-1].name / "lagrangian"
+                                       / m / f)
+            np.testing.assert_allclose(y, x, rtol=1e-12, atol=1e-15,
+                                       err_msg=f"{m} {f}")

@@ -246,9 +246,13 @@ class Grid:
 # ------------------------------------------------------------------- init
 
 def init(case):
-    """Mean profile (1/7 power law with the bulk velocity U_B) plus seeded
-    streak-and-vortex perturbations of amplitude perturb*U_B, divergence
-    free (the streamfunction form of the perturbU utility idea)."""
+    """Initial flow at time 0: the 1/7 power-law profile with bulk velocity
+    U_B plus seeded perturbations of amplitude perturb*U_B: three
+    streamwise vortices psi = f(y) sin(kz z + phase) (v = dpsi/dz,
+    w = -dpsi/dy: divergence free) and three streak modes
+    u' = f(y) sin(kx x + phase) cos(kz z) with the w' that makes them
+    divergence free, f = (1 - (y/delta - 1)^2)^2, plus 5 % white noise
+    (removed by the first pressure projection)."""
     case = Path(case)
     s = foamio.read_dict(case / "system/caseSettings")
     p = preset(s["preset"])
@@ -256,29 +260,21 @@ def init(case):
     d, Ub, A = p["delta"], p["Ubar"], p["perturb"]
     Lx, _, Lz = p["L"]
     x, y, z = C[:, 0], C[:, 1], C[:, 2]
-    eta = 1 - np.abs(y - d) / d                     # 0 at walls, 1 centre
+    eta = np.clip(1 - np.abs(y - d) / d, 0, 1)      # 0 at walls, 1 centre
     U = np.zeros_like(C)
-    U[:, 0] = Ub * 8 / 7 * np.clip(eta, 0, 1)**(1 / 7)
+    U[:, 0] = Ub * 8 / 7 * eta**(1 / 7)
     rng = np.random.default_rng(int(p["seed"]))
-    # Streamwise vortices and streaks with random phases: for
-    # psi(y, z) = f(y) sin(kz z + ph), v = dpsi/dz, w = -dpsi/dy is
-    # divergence free; streaks u' = A g(y) cos(kz z) sin(kx x) are
-    # divergence free on their own (du'/dx balanced below by v = 0? no:
-    # du'/dx is not zero, so they get a matching v-free w correction)
-    yy = (y - d) / d                                # -1 .. 1
+    yy = (y - d) / d
     f = (1 - yy**2)**2
     dfdy = -4 * yy * (1 - yy**2) / d
+    amp = A * Ub / 3
     for kz_n, kx_n in ((4, 2), (6, 3), (8, 1)):
         ph = rng.uniform(0, 2 * PI, 2)
         kz, kx = 2 * PI * kz_n / Lz, 2 * PI * kx_n / Lx
-        amp = A * Ub / 3
-        # v = dpsi/dz, w = -dpsi/dy with psi = amp/kz f(y) sin(kz z + ph0)
         U[:, 1] += amp * f * np.cos(kz * z + ph[0])
         U[:, 2] -= amp / kz * dfdy * np.sin(kz * z + ph[0])
-        # u' = amp g(y) sin(kx x + ph1) cos(kz z); w' from du/dx + dw/dz = 0
-        g = f
-        U[:, 0] += amp * g * np.sin(kx * x + ph[1]) * np.cos(kz * z)
-        U[:, 2] -= (amp * g * kx / kz * np.cos(kx * x + ph[1])
+        U[:, 0] += amp * f * np.sin(kx * x + ph[1]) * np.cos(kz * z)
+        U[:, 2] -= (amp * f * kx / kz * np.cos(kx * x + ph[1])
                     * np.sin(kz * z))
     U += A * Ub * 0.05 * rng.standard_normal(U.shape) * f[:, None]
     foamio.set_internal_vector_field(case / "0/U", U)
@@ -468,8 +464,9 @@ def progress(case):
     if cpu and frac > 0:
         el = float(cpu[-1])
         eta = f", ETA {_hms(el * (1 - frac) / frac)}"
-    return (f"{s['stage']} T* = {t / p['tScale']:.2f} of "
-            f"{t_end / p['tScale']:.2f} ({100 * min(frac, 1):.0f} %{eta})")
+    return (f"{s['stage']}: T* = {t / p['tScale']:.2f}, stage ends at "
+            f"{t_end / p['tScale']:.2f} ({100 * min(frac, 1):.0f} % of this"
+            f" run{eta})")
 
 
 def _hms(sec):

@@ -139,6 +139,28 @@ Foam::LESModels::vanDriestDampedDelta::vanDriestDampedDelta
         << Aplus_ << endl;
 
     delta_ = geometricDelta_();
+
+    // The damped width depends on the flow (U and nu_t at the walls), which
+    // the turbulence model does not hold yet while it constructs its delta.
+    // It is restart state: written at write times and read back here, so
+    // that a restarted run continues with the width of the last step
+    // (otherwise its first step would use the undamped width).
+    IOobject io
+    (
+        delta_.name(),
+        delta_.time().timeName(),
+        delta_.mesh(),
+        IOobject::MUST_READ,
+        IOobject::AUTO_WRITE,
+        false
+    );
+    if (io.typeHeaderOk<volScalarField>(true))
+    {
+        delta_ = volScalarField(io, delta_.mesh());
+        Info<< "    vanDriestDamped delta: read " << delta_.name()
+            << " of time " << delta_.time().timeName() << endl;
+    }
+    delta_.writeOpt() = IOobject::AUTO_WRITE;
 }
 
 
