@@ -70,6 +70,13 @@ def agg_runs(case):
             ("C2", "MAM"): base / "C2/agglomeration-MAM"}
 
 
+def last_profiles(adir, cloud):
+    files = sorted((adir / "postProcessing" / f"{cloud}HardSphere").glob(
+        "*/profiles.dat"), key=lambda f: float(f.parent.name))
+    text = files[-1].read_text()
+    return text, np.loadtxt(files[-1])
+
+
 @pytest.mark.parametrize("np_", [1, 2])
 def test_statistics_complete_and_consistent(smoke_runs, np_):
     case = smoke_runs[np_]
@@ -88,6 +95,23 @@ def test_statistics_complete_and_consistent(smoke_runs, np_):
         # agglomerates and primaries bound in them are consistent
         assert np.all(st["nPrimariesInAgglomerates"]
                       >= 2 * st["nAgglomerates"])
+        # profiles (Eq. 86): the counts per slab volume add up to the
+        # counters; the slab-averaged volume fraction is the global one
+        prof = last_profiles(adir, m)
+        assert "slab volumes: cell volumes split by overlap" in prof[0]
+        t = prof[1]
+        Lx, Ly, Lz = 2 * math.pi * 0.02, 0.04, math.pi * 0.02
+        Vslab = Ly / len(t) * Lx * Lz
+        assert (t[:, 1] * Vslab).sum() == pytest.approx(st["nCol"][-1],
+                                                        rel=1e-9)
+        assert (t[:, 3] * Vslab).sum() == pytest.approx(st["nAgg"][-1],
+                                                        rel=1e-9)
+        # (agglomerates count with their CSM envelope volume; the seeded
+        # pairs merge in the first step)
+        dfin = foamio.read_lagrangian(foamio.time_dirs(adir)[-1]
+                                      / "lagrangian" / m / "d")
+        assert t[:, 5].mean() == pytest.approx(
+            (math.pi / 6 * dfin**3).sum() / (Lx * Ly * Lz), rel=0.01)
     summary = json.loads((case / "results/smoke/summary.json").read_text())
     assert not [r for r in summary["regression"] if r["status"] == "FAIL"]
 

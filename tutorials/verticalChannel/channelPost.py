@@ -129,18 +129,46 @@ def last_output(adir, cloud, name):
 
 
 def read_table(path):
+    """Columns of agglomerateSizes.dat or profiles.dat (header '# k ...'
+    or '# x ...')."""
     cols, rows = None, []
     for line in Path(path).read_text().splitlines():
-        if line.startswith("# ") and cols is None and len(line.split()) > 3:
-            if not line.startswith("# Profiles") and \
-                    not line.startswith("# Agglomerates"):
-                cols = line[2:].split()
+        if line.startswith(("# x ", "# k ")):
+            cols = line[2:].split()
         elif line and not line.startswith("#"):
             rows.append([float(c) for c in line.split()])
-    a = np.array(rows) if rows else np.zeros((0, len(cols or [1, 2])))
-    cols = cols or ["k", "count"]
-    return {c: a[:, i] for i, c in enumerate(cols)} if len(a) else \
-        {c: np.zeros(0) for c in cols}
+    a = np.array(rows) if rows else np.zeros((0, len(cols)))
+    return {c: a[:, i] for i, c in enumerate(cols)}
+
+
+def read_profiles(p, adir, cloud):
+    """profiles.dat of the last write with per-volume values and the
+    volume fraction based on the geometric slab volumes. Files written
+    before the statistics split cell volumes over the slabs (no 'slab
+    volumes' header line) used the cells whose centre lies in a slab: the
+    counts are recovered from that volume (VSMALL for slabs without a
+    cell centre) and divided by the slab volume; the volume fraction of
+    such empty slabs is unknown (NaN)."""
+    f = last_output(adir, cloud, "profiles.dat")
+    if f is None:
+        return None
+    t = read_table(f)
+    if "slab volumes" in f.read_text()[:400]:
+        return t
+    Lx, Ly, Lz = p["L"]
+    pts = foamio.read_lagrangian(adir / "constant/polyMesh/points")
+    yf = np.unique(np.round(pts[:, 1], 12))
+    yc, dy = 0.5 * (yf[1:] + yf[:-1]), np.diff(yf)
+    nb = len(t["x"])
+    w = (yf[-1] - yf[0]) / nb
+    b = np.minimum(np.floor((yc - yf[0]) / w).astype(int), nb - 1)
+    Vc = np.bincount(b, weights=dy, minlength=nb) * Lx * Lz
+    Vg = np.full(nb, w * Lx * Lz)
+    Vused = np.where(Vc > 0, Vc, 1e-300)
+    for c in ("nColPerVolume", "nColFirstPerVolume", "nAggPerVolume"):
+        t[c] = t[c] * Vused / Vg
+    t["alpha"] = np.where(Vc > 0, t["alpha"] * Vc / Vg, np.nan)
+    return t
 
 
 def u_tau(p, case):
@@ -380,10 +408,9 @@ def plots(out, p, res, runs):
     fig, ax = plt.subplots(2, 3, figsize=(15, 8))
     fig2, ax2 = plt.subplots(1, 2, figsize=(11, 4.5))
     for k in keys:
-        f = last_output(*runs[k], "profiles.dat")
-        if f is None:
+        t = read_profiles(p, *runs[k])
+        if t is None:
             continue
-        t = read_table(f)
         y = t["x"] / d - 1
         lab = f"{k[0]} {k[1]}"
         ax[0, 0].plot(y, t["nColPerVolume"], label=lab)
@@ -442,7 +469,7 @@ def picture(out, p, runs):
         render.particles_picture(
             out / f"particles{c}{m}.png", x, n, (0, Lx, 0, Ly, 0, Lz),
             title=f"verticalChannel {p['name']} {c} {m}: T*agg ="
-                  f" {res_time(p, t):.0f}, {len(x)} particles,"
+                  f" {res_time(p, t):.3g}, {len(x)} particles,"
                   f" {int((n > 1).sum())} agglomerates")
         return
 

@@ -193,14 +193,42 @@ Foam::hardSphereStatistics::hardSphereStatistics
         xMin_ = gMin(xp);
         binWidth_ = (gMax(xp) - xMin_)/nBins_;
 
+        // Slab volumes: each cell's volume is split over the slabs in
+        // proportion to the overlap of its extent along the direction
+        // (exact for cells aligned with it), so that slabs thinner than
+        // the cells (e.g. the centre of a wall-graded channel) get their
+        // share instead of nothing
         slabVolume_.setSize(nBins_, Zero);
-        const pointField& cc = mesh.cellCentres();
-        forAll(cc, celli)
+        const pointField& pts = mesh.points();
+        const labelListList& cellPts = mesh.cellPoints();
+        forAll(cellPts, celli)
         {
-            const label b = bin(cc[celli]);
-            if (b >= 0)
+            scalar lo = GREAT;
+            scalar hi = -GREAT;
+            for (const label pointi : cellPts[celli])
             {
-                slabVolume_[b] += mesh.V()[celli];
+                const scalar s = pts[pointi] & direction_;
+                lo = min(lo, s);
+                hi = max(hi, s);
+            }
+            const scalar V = mesh.V()[celli];
+            const label b0 = max(label(floor((lo - xMin_)/binWidth_)), 0);
+            const label b1 =
+                min(label(floor((hi - xMin_)/binWidth_)), nBins_ - 1);
+            if (hi - lo <= SMALL*binWidth_ || b0 >= b1)
+            {
+                slabVolume_[min(max(b0, 0), nBins_ - 1)] += V;
+                continue;
+            }
+            for (label b = b0; b <= b1; ++b)
+            {
+                const scalar overlap =
+                    min(hi, xMin_ + (b + 1)*binWidth_)
+                  - max(lo, xMin_ + b*binWidth_);
+                if (overlap > 0)
+                {
+                    slabVolume_[b] += V*overlap/(hi - lo);
+                }
             }
         }
         reduce(slabVolume_, sumOp<scalarField>());
@@ -397,6 +425,7 @@ void Foam::hardSphereStatistics::writeTime(const Map<label>& sizeHistogram)
         os.precision(IOstream::defaultPrecision());
         os  << "# Profiles of cloud " << cloudName_ << " along "
             << direction_ << ", " << nSteps_ << " steps sampled" << nl
+            << "# slab volumes: cell volumes split by overlap" << nl
             << "# x nColPerVolume nColFirstPerVolume nAggPerVolume aggRate"
             << " alpha meanD Ux Uy Uz uu uv uw vv vw ww visits" << nl;
 
