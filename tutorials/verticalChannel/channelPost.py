@@ -354,6 +354,7 @@ def plots(out, p, res, runs):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import matplotlib.ticker  # noqa: F401
 
     keys = sorted(res)
     # time histories
@@ -436,6 +437,7 @@ def plots(out, p, res, runs):
         a.set_xlabel(r"$y/\delta$")
         a.grid(alpha=0.3)
     ax[1, 0].set_xlabel(r"$y^+$ (lower half)")
+    ax[1, 0].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     ax[0, 0].legend(fontsize=8)
     fig.suptitle(f"verticalChannel {p['name']}: wall-normal profiles over"
                  " the agglomeration stage (Eqs. 86, 88)")
