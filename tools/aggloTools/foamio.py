@@ -84,6 +84,24 @@ def _vec(v):
     return "(" + " ".join(repr(float(c)) for c in v) + ")"
 
 
+def read_internal(path):
+    """internalField of an ASCII volume field as an array ((n,) or (n, 3);
+    a uniform value as one value)."""
+    text = Path(path).read_text()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(",
+                  text)
+    if not m:
+        m2 = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+        return np.array([float(c) for c in m2.group(1).strip('()').split()])
+    n = int(m.group(2))
+    body = text[m.end():]
+    if m.group(1) == "vector":
+        flat = np.array(re.findall(r"[-+0-9.eE]+",
+                                   body[:body.index("\n)")]), float)
+        return flat.reshape(n, 3)
+    return np.array(body[:body.index("\n)")].split(), float)
+
+
 def set_internal_vector_field(path, values):
     """Replace the internalField of a volVectorField file by values (n, 3)."""
     path = Path(path)

@@ -197,26 +197,9 @@ clouds          {clouds};
 
 # ------------------------------------------------------------ mesh helpers
 
-def read_internal(path):
-    """internalField of an ASCII volume field as an array."""
-    text = Path(path).read_text()
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(",
-                  text)
-    if not m:
-        m2 = re.search(r"internalField\s+uniform\s+([^;]+);", text)
-        return np.array(_nums(m2.group(1).split()))
-    n = int(m.group(2))
-    body = text[m.end():]
-    if m.group(1) == "vector":
-        flat = np.array(re.findall(r"[-+0-9.eE]+",
-                                   body[:body.index("\n)")]), float)
-        return flat.reshape(n, 3)
-    return np.array(body[:body.index("\n)")].split(), float)
-
-
 def cell_centres(case, time="0"):
     """Cell centres (postProcess -func writeCellCentres must have run)."""
-    return read_internal(Path(case) / time / "C")
+    return foamio.read_internal(Path(case) / time / "C")
 
 
 class Grid:
@@ -282,31 +265,39 @@ def init(case):
 
 # ----------------------------------------------------------------- release
 
-def _overlaps(x, dmin):
-    """Indices of particles closer than dmin to another (grid hashing)."""
-    h = dmin
+def _overlaps(x, dmin, Lx, Lz):
+    """Indices of particles closer than dmin to another, periodic in x
+    (period Lx) and z (Lz): grid hashing with cells of at least dmin that
+    tile the periods, minimum-image distances."""
+    nx, nz = max(1, int(Lx // dmin)), max(1, int(Lz // dmin))
+    h = np.array([Lx / nx, dmin, Lz / nz])
     ijk = np.floor(x / h).astype(np.int64)
-    ijk -= ijk.min(axis=0)
-    dims = ijk.max(axis=0) + 3
-    key = ijk[:, 0] + dims[0] * (ijk[:, 1] + dims[1] * ijk[:, 2])
+    ijk[:, 0] %= nx
+    ijk[:, 2] %= nz
+    ijk[:, 1] -= ijk[:, 1].min()
+    ny = ijk[:, 1].max() + 3
+    key = ijk[:, 0] + nx * (ijk[:, 1] + ny * ijk[:, 2])
     order = np.argsort(key, kind="stable")
     skey = key[order]
     bad = set()
-    offs = [(a, b, c) for a in (-1, 0, 1) for b in (-1, 0, 1)
-            for c in (-1, 0, 1)]
-    for a, b, c in offs:
-        nk = key + a + dims[0] * (b + dims[1] * c)
-        lo = np.searchsorted(skey, nk, "left")
-        hi = np.searchsorted(skey, nk, "right")
-        has = np.nonzero(hi > lo)[0]
-        for m in range(int((hi - lo).max(initial=0))):
-            sel = has[lo[has] + m < hi[has]]
-            j = order[lo[sel] + m]
-            ok = j != sel
-            sel, j = sel[ok], j[ok]
-            close = np.einsum("ij,ij->i", x[sel] - x[j],
-                              x[sel] - x[j]) < dmin**2
-            bad.update(np.maximum(sel[close], j[close]).tolist())
+    for a in (-1, 0, 1):
+        for b in (-1, 0, 1):
+            for c in (-1, 0, 1):
+                nk = ((ijk[:, 0] + a) % nx
+                      + nx * (ijk[:, 1] + b + ny * ((ijk[:, 2] + c) % nz)))
+                lo = np.searchsorted(skey, nk, "left")
+                hi = np.searchsorted(skey, nk, "right")
+                has = np.nonzero(hi > lo)[0]
+                for m in range(int((hi - lo).max(initial=0))):
+                    sel = has[lo[has] + m < hi[has]]
+                    j = order[lo[sel] + m]
+                    ok = j != sel
+                    sel, j = sel[ok], j[ok]
+                    r = x[sel] - x[j]
+                    r[:, 0] -= Lx * np.round(r[:, 0] / Lx)
+                    r[:, 2] -= Lz * np.round(r[:, 2] / Lz)
+                    close = np.einsum("ij,ij->i", r, r) < dmin**2
+                    bad.update(np.maximum(sel[close], j[close]).tolist())
     return np.array(sorted(bad), int)
 
 
@@ -319,7 +310,7 @@ def release(case, time=None):
         time = foamio.time_dirs(case)[-1].name
     C = cell_centres(case, time)
     grid = Grid(C, p["n"])
-    U = read_internal(case / time / "U")
+    U = foamio.read_internal(case / time / "U")
     N, dp = int(p["nParticles"]), float(c["d"])
     Lx, Ly, Lz = p["L"]
     rng = np.random.default_rng(int(p["seed"]) + 1000)
@@ -327,7 +318,7 @@ def release(case, time=None):
     hi = np.array([Lx, Ly - dp / 2 * 1.001, Lz])
     x = rng.uniform(lo, hi, (N, 3))
     for _ in range(100):
-        bad = _overlaps(x, dp * 1.001)
+        bad = _overlaps(x, dp * 1.001, Lx, Lz)
         if not len(bad):
             break
         x[bad] = rng.uniform(lo, hi, (len(bad), 3))
@@ -365,7 +356,7 @@ def seed_pairs(case, clouds):
         return
     time = foamio.time_dirs(case)[-1].name
     grid = Grid(cell_centres(case, time), p["n"])
-    Uf = read_internal(case / time / "U")
+    Uf = foamio.read_internal(case / time / "U")
     dp = float(configuration(s["configuration"])["d"])
     Lx, Ly, Lz = p["L"]
     d = p["delta"]
