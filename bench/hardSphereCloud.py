@@ -57,9 +57,8 @@ def make_case(case, N, particles=True):
                     agglomeration="EAM",
                     forces="{ sphereDrag; gravity; }",
                     gravity=(0, -9.81, 0), rotation=True,
-                    hard_sphere="hardSphereCollision\n{\n    active true;\n"
-                    + hscase.KERNEL + "    agglomerationModel EAM;\n"
-                    "    walls {}\n}\n")
+                    hard_sphere=hscase.KERNEL
+                    + "    agglomerationModel EAM;\n    walls {}\n")
     return nc**3
 
 

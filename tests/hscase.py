@@ -58,7 +58,10 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              patch_interaction="patchInteractionModel none;"):
     """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
-    rotation: the cloud's particleRotation switch; dispersion: the
+    hard_sphere: the body of the collision model's hardSphereCoeffs
+    (default: KERNEL, the agglomeration model and smooth walls), or "none"
+    for collisionModel none; the statistics function object is always on.
+    rotation: rotationModel fluidTorque (else none); dispersion: the
     dispersionModel entry (plus its coefficients); turbulence: the body
     of constant/turbulenceProperties."""
     case = Path(case)
@@ -151,8 +154,10 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
 
     walls = f'walls {{ ".*" {WALL} }}'
     hs = hard_sphere or (
-        "hardSphereCollision\n{\n    active true;\n" + KERNEL
-        + f"    agglomerationModel {agglomeration};\n    {walls}\n}}\n")
+        KERNEL + f"    agglomerationModel {agglomeration};\n    {walls}\n")
+    collision = ("    collisionModel none;\n" if hs == "none" else
+                 "    collisionModel hardSphere;\n"
+                 "    hardSphereCoeffs\n    {\n" + hs + "    }\n")
     foamfile(case / "constant/kinematicCloudProperties", "dictionary",
              "constant", "kinematicCloudProperties",
              "solution\n{\n    active true;\n"
@@ -167,10 +172,13 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              "subModels\n{\n    particleForces " + forces + "\n"
              "    injectionModels {}\n    " + dispersion + "\n"
              "    " + patch_interaction + "\n    surfaceFilmModel none;\n"
-             "    stochasticCollisionModel none;\n}\n"
-             + "particleRotation { active "
-             + ("true" if rotation else "false") + "; }\n"
-             + cloud_extra + hs)
+             "    stochasticCollisionModel none;\n"
+             "    rotationModel "
+             + ("fluidTorque" if rotation else "none") + ";\n"
+             + collision + "}\n"
+             "cloudFunctions\n{\n    hardSphereStatistics"
+             " { type hardSphereStatistics; }\n}\n"
+             + cloud_extra)
     write_particles(case, particles)
     return case
 

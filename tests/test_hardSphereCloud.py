@@ -217,11 +217,10 @@ def gas_particles(N, Lbox, phi, sigma, seed):
 
 
 def gas_kernel(en):
-    return ("hardSphereCollision\n{\n    active true;\n"
-            "    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.6e9;"
+    return ("    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.6e9;"
             " delta0 2e-10; rho0 2200; }\n"
             f"    particleCollision {{ en {en}; et 1; muSt 0; muKin 0; }}\n"
-            "    agglomerationModel none;\n    walls {}\n}\n")
+            "    agglomerationModel none;\n    walls {}\n")
 
 
 def enskog(phi):
@@ -400,7 +399,7 @@ def test_bad_input_is_fatal(case_dir, foam_env, name):
 # ------------------------------------------- ghost contacts and counting
 
 def set_hs(case_dir, entries):
-    """Add entries to the hardSphereCollision dictionary of a box case."""
+    """Add entries to the hardSphereCoeffs dictionary of a box case."""
     f = case_dir / "constant" / "kinematicCloudProperties"
     text = f.read_text()
     old = "agglomerationModel none;"
@@ -497,3 +496,91 @@ def test_two_clouds_share_one_flow(case_dir, foam_env):
         assert rows == single[model]
     assert single["EAM"][-1]["nCol"] != single["MAM"][-1]["nCol"] or \
         single["EAM"][-1]["nAgg"] != single["MAM"][-1]["nAgg"]
+
+
+# ------------------------------------------ pair search vs brute force
+
+def use_brute_force(case_dir):
+    """pairSearch bruteForce in the hardSphereCoeffs of a box case."""
+    f = case_dir / "constant" / "kinematicCloudProperties"
+    text = f.read_text()
+    old = "agglomerationModel "
+    assert old in text
+    f.write_text(text.replace(old, "pairSearch bruteForce; " + old, 1))
+
+
+def oracle_cloud(case_dir, kind, decompose=(1, 1, 1)):
+    """Random clouds for the search oracle: 'gas' (periodic in x, y, z,
+    fast: about one cell per step), 'wall' (periodic in x and z, packed
+    against the lower wall, EAM), 'poly' (diameters 12-60 um, agglomerates
+    of up to 125 primaries, periodic in x and z, EAM)."""
+    rng = np.random.default_rng({"gas": 21, "wall": 22, "poly": 23}[kind])
+    Lb = 2e-4
+    if kind == "gas":
+        parts, d, U = gas_particles(400, Lb, 0.02, 0.05, seed=24)
+        box_case(case_dir, L=(Lb,) * 3, n=(5, 5, 5), kinds=("cyclic",) * 3,
+                 particles=parts, dt=2e-4, end_time=6e-3, write_interval=1,
+                 hard_sphere=gas_kernel(0.9), decompose=decompose)
+        return
+    xs, ds = [], []
+    while len(xs) < 250:
+        d = D if kind == "wall" else D * rng.integers(1, 6)
+        lo = (0.6 * d, 0.6 * d, 0.6 * d)
+        hi = (Lb - 0.6 * d, (0.25 if kind == "wall" else 1) * Lb - 0.6 * d,
+              Lb - 0.6 * d)
+        x = rng.uniform(lo, hi)
+        if all(np.linalg.norm(x - y) > 0.55 * (d + e) * 1.02
+               for y, e in zip(xs, ds)):
+            xs.append(x)
+            ds.append(d)
+    U = rng.normal(0, 1.5e-3, (len(xs), 3))
+    parts = [dict(x=tuple(x), U=tuple(u), d=d, id=i,
+                  nPrimary=round((d / D) ** 3))
+             for i, (x, u, d) in enumerate(zip(xs, U, ds))]
+    box_case(case_dir, L=(Lb,) * 3, n=(6, 6, 6),
+             kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
+             end_time=4e-3, write_interval=1, agglomeration="EAM",
+             decompose=decompose)
+
+
+@pytest.mark.parametrize("kind,ranks", [("gas", 0), ("wall", 0),
+                                        ("poly", 0), ("gas", 2),
+                                        ("wall", 2)])
+def test_pair_search_matches_brute_force(case_dir, foam_env, kind, ranks):
+    """The InteractionLists pair search finds every pair the O(N^2) search
+    over all particles and all periodic images finds: identical counters
+    every step (any missed or extra candidate changes the events) and the
+    same particles after the first step with a collision, serial and on 2
+    ranks. The
+    particle states agree to round-off only (a referred partner's end
+    position is the barycentric position of a transformed copy there, the
+    exact shifted position here), and round-off grows chaotically with
+    every later collision."""
+    out = {}
+    for search in ("interactionLists", "bruteForce"):
+        c = case_dir / search
+        oracle_cloud(c, kind, decompose=(2, 1, 1))
+        if search == "bruteForce":
+            use_brute_force(c)
+        run_case(c, parallel=ranks)
+        if ranks:
+            run([foam_bin("reconstructPar")], c, "log.reconstructPar.all")
+        rows = stats(c)
+        # the first step with a collision
+        first = next(r["Time"] for r in rows if r["nCol"] > 0)
+        t = min((p.name for p in c.iterdir()
+                 if re.fullmatch(r"[0-9.e-]+", p.name)),
+                key=lambda name: abs(float(name) - first))
+        out[search] = (rows, cloud_state(c, t))
+    rows, state = out["interactionLists"]
+    assert rows[-1]["nCol"] >= 20
+    if kind != "gas":
+        assert rows[-1]["nAgg"] > 0 and rows[-1]["nWall"] > 0
+    assert out["bruteForce"][0] == rows
+    other = out["bruteForce"][1]
+    assert other.keys() == state.keys()
+    for name in ("nPrimary", "origId", "origProcId", "lastPartnerId"):
+        assert other[name] == state[name], name
+    for name in ("U", "omega", "d", "rho", "lastContactTime"):
+        np.testing.assert_allclose(other[name], state[name], rtol=1e-9,
+                                   atol=1e-9, err_msg=name)

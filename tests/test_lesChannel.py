@@ -112,11 +112,14 @@ def channel_case(case, n_particles=1000):
       "    PozorskiApteCoeffs { kSgsSource nut; Ck 0.094; CT 1; betaC 1;"
       " seed 1; wallReflection true; }\n"
       "    patchInteractionModel none;\n    surfaceFilmModel none;\n"
-      "    stochasticCollisionModel none;\n}\n"
-      "particleRotation { active true; }\n"
-      "hardSphereCollision\n{\n    active true;\n" + hscase.KERNEL
+      "    stochasticCollisionModel none;\n"
+      "    rotationModel fluidTorque;\n"
+      "    collisionModel hardSphere;\n"
+      "    hardSphereCoeffs\n    {\n" + hscase.KERNEL
       + "    agglomerationModel EAM;\n    randomSeed 1;\n"
-      f'    walls {{ ".*Wall" {rough} }}\n}}\n')
+      f'    walls {{ ".*Wall" {rough} }}\n    }}\n}}\n'
+      "cloudFunctions { hardSphereStatistics"
+      " { type hardSphereStatistics; } }\n")
 
     rng = np.random.default_rng(7)
     X = rng.uniform((0, 2e-4, 0), (Lx, Ly - 2e-4, Lz), (n_particles, 3))

@@ -276,9 +276,8 @@ def test_two_way_coupling_conserves_momentum(case_dir, foam_env):
                     forces="{ SchillerNaumannDrag; }", rotation=True,
                     coupled=True, frozen=False, tol=1e-13,
                     source_scheme="explicit 1", nu=NU, rho_f=RHO_F,
-                    hard_sphere="hardSphereCollision\n{\n    active true;\n"
-                    + hscase.KERNEL + "    agglomerationModel none;\n"
-                    "    walls {}\n}\n")
+                    hard_sphere=hscase.KERNEL
+                    + "    agglomerationModel none;\n    walls {}\n")
     hscase.run_case(case_dir)
     t = times(case_dir)[-1]
     m = rho_p * math.pi * d**3 / 6
@@ -332,7 +331,7 @@ def test_sgs_tracers_well_mixed(case_dir, foam_env, flow):
                     "    PozorskiApteCoeffs { kSgsSource nut; Ck 0.094; CT 1;"
                     " betaC 1; seed 4; wallReflection true; }",
                     # tracers: no collisions; stock rebound at the walls
-                    hard_sphere="hardSphereCollision { active false; }",
+                    hard_sphere="none",
                     patch_interaction="patchInteractionModel "
                     "standardWallInteraction;\n    "
                     "standardWallInteractionCoeffs { type rebound; }")

@@ -69,7 +69,7 @@ Foam::binaryCollision::binaryCollision
     // AB16 Eq. 9: slip of the contact point of 2 relative to that of 1
     uc_ = ur_ - un_*n_ - ((0.5*d1_*p1.omega + 0.5*d2_*p2.omega) ^ n_);
 
-    // AB16 Eq. 14; s = 0 leaves t = 0 (physics.md A14)
+    // AB16 Eq. 14; s = 0 leaves t = 0 (doc/models.md 1, A14)
     s_ = mag(uc_);
     if (s_ > 0)
     {

@@ -45,7 +45,7 @@ void Foam::collisionCoefficients::check(const dictionary& dict) const
             << "In " << dict.name() << ": muKin = " << muKin_
             << " > 2 muSt/(1 + et) = " << 2*muSt_/(1 + et_) << nl
             << "    A sliding collision can then gain kinetic energy"
-            << " (physics.md section 1.5)." << endl;
+            << " (doc/models.md 1.5)." << endl;
     }
 }
 

@@ -129,7 +129,7 @@ Foam::scalar Foam::agglomerationModels::EAM::dumbbellRotationalEnergy
     const scalar ell
 )
 {
-    // Closed form of AB16 Eqs. 38-46 (physics.md section 2.3)
+    // Closed form of AB16 Eqs. 38-46 (doc/models.md 2.3)
     const scalar Ln2 = sqr(L & n);
     return
         0.5
@@ -199,7 +199,7 @@ void Foam::agglomerationModels::EAM::collide
     const scalar ErotAg =
         dumbbellRotationalEnergy(L, n, I1, I2, mHat, pair.ell());
 
-    // Tangential direction of the cohesion correction (physics.md A4)
+    // Tangential direction of the cohesion correction (doc/models.md 2.5, A4)
     vector tE(Zero);
     if (tangentialProjection_ == projectionType::PAPER)
     {
@@ -223,7 +223,7 @@ void Foam::agglomerationModels::EAM::collide
     // AB16 Eq. 55 (En > 0 since e_n > 0 and u_n < 0)
     const scalar kn2 = 1 - dE/En;
 
-    // AB16 Eq. 58, only if kn2 <= 0 (physics.md section 2.4)
+    // AB16 Eq. 58, only if kn2 <= 0 (doc/models.md 2.4)
     scalar kt2 = std::numeric_limits<scalar>::quiet_NaN();
     if (kn2 <= 0)
     {
@@ -313,7 +313,8 @@ void Foam::agglomerationModels::EAM::collide
     outcome.p1.omega *= komega;
     outcome.p2.omega *= komega;
 
-    // physics.md A6: orbital angular momentum change (non-zero in case II)
+    // doc/models.md 5.1, A6: orbital angular momentum change (non-zero
+    // in case II)
     outcome.deltaL = mag(mHat*pair.ell()*(n ^ fAg));
 }
 

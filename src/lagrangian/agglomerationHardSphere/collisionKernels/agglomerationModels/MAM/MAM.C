@@ -130,12 +130,12 @@ Foam::agglomerationModels::MAM::MAM
         << ", slidingCriterion "
         << slidingCriterionTypeNames[slidingCriterion_] << endl;
 
-    // physics.md A13
+    // doc/models.md 5.3, A13
     if (coeffs_.muKin() <= coeffs_.muSt()/(1 + coeffs_.et()))
     {
         Info<< "    MAM: muKin <= muSt/(1 + et): with these coefficients"
             << " only sticking collisions can agglomerate"
-            << " (physics.md A13)" << endl;
+            << " (doc/models.md 5.3, A13)" << endl;
     }
 }
 
@@ -161,7 +161,7 @@ Foam::scalar Foam::agglomerationModels::MAM::hertzTimeScale
     const scalar v
 ) const
 {
-    // AB16 Eq. 71 (reconstructed, physics.md section 3.2)
+    // AB16 Eq. 71 (reconstructed, doc/models.md 3.2)
     const scalar RHat = 0.5*d1*d2/(d1 + d2);
     const scalar EHat = material_.EHat();
     return std::pow(mHat*mHat/(RHat*EHat*EHat*v), 0.2);

@@ -104,7 +104,7 @@ Foam::scalar Foam::agglomerationModel::impactSpeed
     const binaryCollision& pair
 )
 {
-    // physics.md A1: v = |u_n| (head-on assumption) or |u_r|
+    // doc/models.md 2.2, A1: v = |u_n| (head-on assumption) or |u_r|
     return
         option == impactVelocityType::NORMAL
       ? -pair.un()

@@ -48,7 +48,7 @@ namespace structureModels
 
 Foam::scalarList Foam::structureModels::CSM::defaultPackingFractions()
 {
-    // physics.md section 4.3: N = 2-4 AB16 (truncated to 5 decimals),
+    // doc/models.md 4.3: N = 2-4 AB16 (truncated to 5 decimals),
     // N = 5-30 reconstructed (multistart optimisation)
     static const scalar table[] =
     {

@@ -81,7 +81,7 @@ void Foam::structureModel::form
     ag.U = (m1*p1.U + m2*p2.U)/mAg;
     ag.x = (m1*p1.x + m2*p2.x)/mAg;
 
-    // physics.md A11: integer bookkeeping of primaries
+    // doc/models.md 4.1, A11: integer bookkeeping of primaries
     ag.nPrimary = p1.nPrimary + p2.nPrimary;
 
     // AB16 Eqs. 82-84: effective density, diameter from mass conservation
@@ -94,7 +94,7 @@ void Foam::structureModel::form
     const scalar Iag = 0.1*mAg*ag.d*ag.d;
     ag.omega = L/Iag;
 
-    // physics.md A7: kinetic energy change at formation
+    // doc/models.md 5.2, A7: kinetic energy change at formation
     const scalar KEbefore = p1.kineticEnergy() + p2.kineticEnergy();
     const scalar KEtrans = 0.5*mAg*magSqr(ag.U);
     scalar KErot = 0.5*Iag*magSqr(ag.omega);

@@ -105,7 +105,12 @@ void Foam::AgglomerateParcel<ParcelType>::calc
 {
     ParcelType::calc(cloud, td, dt);
 
-    cloud.updateSpin(*this, td, dt);
+    cloud.rotation().correct
+    (
+        static_cast<typename TrackCloudType::parcelType&>(*this),
+        td,
+        dt
+    );
 }
 
 
@@ -194,7 +199,14 @@ bool Foam::AgglomerateParcel<ParcelType>::hitPatch
 
     if (isA<wallPolyPatch>(pp))
     {
-        // The SGS velocity seen is reflected like the particle velocity
+        // The collision model's wall interaction, if it handles the patch
+        if (cloud.collision().hitWall(p, pp))
+        {
+            return true;
+        }
+
+        // Else the stock patch interaction; the SGS velocity seen is
+        // reflected like the particle velocity
         const particleKeyedModel* keyed = cloud.keyedDispersion();
 
         if (keyed && keyed->reflectAtWalls())
@@ -204,11 +216,6 @@ bool Foam::AgglomerateParcel<ParcelType>::hitPatch
                 p.UTurb(),
                 -pp.faceNormals()[pp.whichFace(p.face())]
             );
-        }
-
-        if (cloud.hitWallCentre(p, pp))
-        {
-            return true;
         }
     }
 

@@ -38,6 +38,11 @@ License
 #include "SchillerNaumannDragForce.H"
 #include "RotationLiftForce.H"
 #include "PozorskiApteDispersion.H"
+#include "NoHardSphereCollision.H"
+#include "HardSphereCollision.H"
+#include "HardSphereStatistics.H"
+#include "NoParticleRotation.H"
+#include "FluidTorqueRotation.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -55,6 +60,21 @@ makeParcelSurfaceFilmModels(basicAgglomeratingCloud);
 makeParticleForceModelType(SchillerNaumannDragForce, basicAgglomeratingCloud);
 makeParticleForceModelType(RotationLiftForce, basicAgglomeratingCloud);
 makeDispersionModelType(PozorskiApteDispersion, basicAgglomeratingCloud);
+makeCloudFunctionObjectType(HardSphereStatistics, basicAgglomeratingCloud);
+
+// The collision stage
+makeHardSphereCollisionModel(basicAgglomeratingCloud);
+makeHardSphereCollisionModelType
+(
+    NoHardSphereCollision,
+    basicAgglomeratingCloud
+);
+makeHardSphereCollisionModelType(HardSphereCollision, basicAgglomeratingCloud);
+
+// The particle rotation
+makeParticleRotationModel(basicAgglomeratingCloud);
+makeParticleRotationModelType(NoParticleRotation, basicAgglomeratingCloud);
+makeParticleRotationModelType(FluidTorqueRotation, basicAgglomeratingCloud);
 
 
 // ************************************************************************* //

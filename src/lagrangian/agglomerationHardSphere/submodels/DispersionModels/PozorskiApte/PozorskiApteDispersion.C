@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "PozorskiApteDispersion.H"
+#include "randomStreams.H"
 #include "particleKernels.H"
 #include "keyedRandom.H"
 #include "turbulenceModel.H"
@@ -176,7 +177,7 @@ Foam::vector Foam::PozorskiApteDispersion<CloudType>::update
 
     keyedRandom rnd
     (
-        seed_, randomStream, keyProc_, keyId_,
+        seed_, randomStreams::sgsDispersion, keyProc_, keyId_,
         this->owner().db().time().timeIndex(), keyFraction_
     );
 

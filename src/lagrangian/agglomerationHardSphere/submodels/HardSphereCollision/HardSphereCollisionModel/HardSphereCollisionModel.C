@@ -25,60 +25,36 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "particleKernels.H"
+#include "HardSphereCollisionModel.H"
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-template<class CloudType>
-inline const Foam::hardSphereCollisionKernel&
-Foam::HardSphereCloud<CloudType>::kernel() const
-{
-    return *kernel_;
-}
-
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
-inline const Foam::hardSphereStatistics&
-Foam::HardSphereCloud<CloudType>::stats() const
-{
-    return *stats_;
-}
-
-
-template<class CloudType>
-template<class ParcelT, class TrackingDataT>
-inline void Foam::HardSphereCloud<CloudType>::updateSpin
+Foam::HardSphereCollisionModel<CloudType>::HardSphereCollisionModel
 (
-    ParcelT& p,
-    const TrackingDataT& td,
-    const scalar dt
-) const
-{
-    if (!rotationActive_)
-    {
-        return;
-    }
+    CloudType& owner
+)
+:
+    CloudSubModelBase<CloudType>(owner),
+    step_()
+{}
 
-    const vector vorticity
-    (
-        curlUcInterpPtr_->interpolate(p.coordinates(), p.currentTetIndices())
-    );
 
-    const scalar ReR =
-        particleKernels::rotationalReynolds
-        (
-            0.5*vorticity - p.omega(), p.d(), td.rhoc(), td.muc()
-        );
+template<class CloudType>
+Foam::HardSphereCollisionModel<CloudType>::HardSphereCollisionModel
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    CloudSubModelBase<CloudType>(owner, dict, typeName, type),
+    step_()
+{}
 
-    p.omega() =
-        particleKernels::spinUpdate
-        (
-            p.omega(),
-            vorticity,
-            dt,
-            particleKernels::spinTimeScale(p.rho(), p.d(), td.muc(), ReR)
-        );
-}
 
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+#include "HardSphereCollisionModelNew.C"
 
 // ************************************************************************* //

@@ -30,30 +30,6 @@ License
 #include "volFields.H"
 #include "OSspecific.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-const Foam::Enum<Foam::hardSphereStatistics::counterType>
-Foam::hardSphereStatistics::counterNames
-({
-    { counterType::COL, "nCol" },
-    { counterType::COL_FIRST, "nColFirst" },
-    { counterType::COL_REPEAT, "nColRepeat" },
-    { counterType::COL_OVERLAP, "nColOverlapStart" },
-    { counterType::AGG, "nAgg" },
-    { counterType::AGG_FIRST, "nAggFirst" },
-    { counterType::AGG_REPEAT, "nAggRepeat" },
-    { counterType::AGG_OVERLAP, "nAggOverlapStart" },
-    { counterType::SUPPRESSED, "nSuppressed" },
-    { counterType::SKIP_SEPARATING, "nSkipSeparating" },
-    { counterType::WALL, "nWall" },
-    { counterType::WALL_CENTRE, "nWallCentre" },
-    { counterType::STICKING, "nSticking" },
-    { counterType::CASE_II, "nCaseII" },
-    { counterType::ENERGY_GAIN, "nEnergyGain" },
-    { counterType::SPIN_CLAMPED, "nSpinClamped" },
-    { counterType::MAM_CRIT_II, "nMAMslidingCritII" },
-});
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -76,7 +52,11 @@ void Foam::hardSphereStatistics::readState()
     forAll(counters_, i)
     {
         counters_[i] =
-            cd.getOrDefault<label>(counterNames[counterType(i)], 0);
+            cd.getOrDefault<label>
+            (
+                hardSphereStep::counterNames[counterType(i)],
+                0
+            );
     }
     sumDeltaL_ = state_.getOrDefault<scalar>("sumDeltaL", 0);
     energyGain_ = state_.getOrDefault<scalar>("agglomerationEnergyGain", 0);
@@ -112,7 +92,7 @@ void Foam::hardSphereStatistics::updateState()
     dictionary cd;
     forAll(counters_, i)
     {
-        cd.add(counterNames[counterType(i)], counters_[i]);
+        cd.add(hardSphereStep::counterNames[counterType(i)], counters_[i]);
     }
     state_.set("counters", cd);
     state_.set("sumDeltaL", sumDeltaL_);
@@ -160,7 +140,7 @@ Foam::hardSphereStatistics::hardSphereStatistics
             false
         )
     ),
-    counters_(N_COUNTERS, Zero),
+    counters_(hardSphereStep::N_COUNTERS, Zero),
     sumDeltaL_(0),
     energyGain_(0),
     profiles_(dict.getOrDefault<bool>("profiles", false)),
@@ -260,7 +240,7 @@ Foam::hardSphereStatistics::hardSphereStatistics
             << " nPrimariesInAgglomerates maxPrimaries";
         forAll(counters_, i)
         {
-            os  << ' ' << counterNames[counterType(i)];
+            os  << ' ' << hardSphereStep::counterNames[counterType(i)];
         }
         os  << " aggRate D10 Dmax mass" << endl;
     }
@@ -383,8 +363,9 @@ void Foam::hardSphereStatistics::writeStep
         os  << ' ' << counters_[i];
     }
 
+    const label nCol = counters_[hardSphereStep::COL];
     const scalar aggRate =
-        counters_[COL] > 0 ? scalar(counters_[AGG])/counters_[COL] : 0;
+        nCol > 0 ? scalar(counters_[hardSphereStep::AGG])/nCol : 0;
 
     os  << ' ' << aggRate << ' ' << D10 << ' ' << Dmax << ' ' << mass
         << endl;

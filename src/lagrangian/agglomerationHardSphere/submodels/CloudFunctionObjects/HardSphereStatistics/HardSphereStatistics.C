@@ -1,0 +1,250 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "HardSphereStatistics.H"
+#include "HardSphereCloud.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::HardSphereStatistics<CloudType>::HardSphereStatistics
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& modelName
+)
+:
+    CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
+    stats_(new hardSphereStatistics(owner.mesh(), owner.name(), dict))
+{}
+
+
+template<class CloudType>
+Foam::HardSphereStatistics<CloudType>::HardSphereStatistics
+(
+    const HardSphereStatistics<CloudType>& hs
+)
+:
+    CloudFunctionObject<CloudType>(hs),
+    stats_(nullptr)
+{
+    // A second accumulator would start stats.dat again
+    FatalErrorInFunction
+        << "The hardSphereStatistics of cloud " << hs.owner().name()
+        << " cannot be copied (the hard-sphere cloud is transient and is"
+        << " never copied)" << exit(FatalError);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::HardSphereStatistics<CloudType>::postEvolve()
+{
+    typedef HardSphereCloud<CloudType> hsCloudType;
+    typedef hardSphereStep hs;
+
+    const hsCloudType* cloudPtr =
+        dynamic_cast<const hsCloudType*>(&this->owner());
+    if (!cloudPtr)
+    {
+        FatalErrorInFunction
+            << "The function object hardSphereStatistics needs a"
+            << " hard-sphere cloud; " << this->owner().name()
+            << " is not one" << exit(FatalError);
+    }
+    const hsCloudType& cloud = *cloudPtr;
+    const hardSphereStep& step = cloud.collision().step();
+    hardSphereStatistics& st = stats_();
+
+    // Counters
+    labelField globalCounts(step.counts);
+    reduce(globalCounts, sumOp<labelField>());
+    st.addCounts
+    (
+        globalCounts,
+        returnReduce(step.sumDeltaL, sumOp<scalar>()),
+        returnReduce(step.energyGain, sumOp<scalar>())
+    );
+
+    // Particles
+    label nParticles = 0;
+    label nPrimaries = 0;
+    label nAgglomerates = 0;
+    label nPrimariesInAgglomerates = 0;
+    label maxPrimaries = 0;
+    scalar sumD = 0;
+    scalar Dmax = 0;
+    scalar mass = 0;
+
+    const bool profiles = st.profiles();
+    const label nBins = profiles ? st.meanU().size() : 0;
+    scalarField colBin(nBins, Zero);
+    scalarField colFirstBin(nBins, Zero);
+    scalarField aggBin(nBins, Zero);
+    scalarField visits(nBins, Zero);
+    scalarField volume(nBins, Zero);
+    scalarField sumDBin(nBins, Zero);
+    vectorField sumU(nBins, Zero);
+    symmTensorField sumUU(nBins, Zero);
+    const vectorField& K = st.meanU();
+
+    const bool writeTime = cloud.db().time().writeTime();
+    Map<label> histogram;
+
+    for (const parcelType& p : cloud)
+    {
+        ++nParticles;
+        nPrimaries += p.nPrimary();
+        if (p.nPrimary() > 1)
+        {
+            ++nAgglomerates;
+            nPrimariesInAgglomerates += p.nPrimary();
+            if (writeTime)
+            {
+                ++histogram(p.nPrimary(), 0);
+            }
+        }
+        maxPrimaries = max(maxPrimaries, p.nPrimary());
+        sumD += p.d();
+        Dmax = max(Dmax, p.d());
+        mass += p.nParticle()*p.mass();
+
+        if (profiles)
+        {
+            const label b = st.bin(p.position());
+            if (b >= 0)
+            {
+                visits[b] += 1;
+                volume[b] += p.nParticle()*p.volume();
+                sumDBin[b] += p.d();
+                sumU[b] += p.U();
+                sumUU[b] += sqr(p.U() - K[b]);
+            }
+        }
+    }
+
+    reduce(nParticles, sumOp<label>());
+    reduce(nPrimaries, sumOp<label>());
+    reduce(nAgglomerates, sumOp<label>());
+    reduce(nPrimariesInAgglomerates, sumOp<label>());
+    reduce(maxPrimaries, maxOp<label>());
+    reduce(sumD, sumOp<scalar>());
+    reduce(Dmax, maxOp<scalar>());
+    reduce(mass, sumOp<scalar>());
+
+    // Audit of the collision stage (mass0 < 0: the stage did not run)
+    if
+    (
+        step.mass0 >= 0
+     && (
+            nPrimaries != step.nPrimaries0
+         || mag(mass - step.mass0) > 1e-11*max(step.mass0, VSMALL)
+        )
+    )
+    {
+        if (Cloud<parcelType>::debug)
+        {
+            FatalErrorInFunction
+                << "Particle mass or primaries not conserved by the"
+                << " collision stage: mass " << step.mass0 << " -> "
+                << mass << ", primaries " << step.nPrimaries0 << " -> "
+                << nPrimaries << exit(FatalError);
+        }
+        WarningInFunction
+            << "Particle mass or primaries not conserved by the"
+            << " collision stage: mass " << step.mass0 << " -> " << mass
+            << ", primaries " << step.nPrimaries0 << " -> " << nPrimaries
+            << endl;
+    }
+
+    if (profiles)
+    {
+        // Events at their contact points
+        forAll(step.eventPoint, k)
+        {
+            const label b = st.bin(step.eventPoint[k]);
+            if (b >= 0)
+            {
+                colBin[b] += 1;
+                if (step.eventCategory[k] == hs::FIRST)
+                {
+                    colFirstBin[b] += 1;
+                }
+                if (step.eventAgglomerates[k])
+                {
+                    aggBin[b] += 1;
+                }
+            }
+        }
+
+        reduce(colBin, sumOp<scalarField>());
+        reduce(colFirstBin, sumOp<scalarField>());
+        reduce(aggBin, sumOp<scalarField>());
+        reduce(visits, sumOp<scalarField>());
+        reduce(volume, sumOp<scalarField>());
+        reduce(sumDBin, sumOp<scalarField>());
+        reduce(sumU, sumOp<vectorField>());
+        reduce(sumUU, sumOp<symmTensorField>());
+
+        st.addEventProfiles(colBin, colFirstBin, aggBin);
+        st.addParticleProfiles(visits, volume, sumDBin, sumU, sumUU);
+    }
+
+    st.writeStep
+    (
+        cloud.db().time().value(),
+        nParticles,
+        nPrimaries,
+        nAgglomerates,
+        nPrimariesInAgglomerates,
+        maxPrimaries,
+        nParticles ? sumD/nParticles : 0,
+        Dmax,
+        mass
+    );
+
+    if (writeTime)
+    {
+        Pstream::mapCombineGather(histogram, plusEqOp<label>());
+        Pstream::mapCombineScatter(histogram);
+        st.writeTime(histogram);
+    }
+
+    const label* c = st.counters().cdata();
+    Info<< "    Hard-sphere: nCol " << c[hs::COL]
+        << " (step " << globalCounts[hs::COL]
+        << "), nAgg " << c[hs::AGG]
+        << " (step " << globalCounts[hs::AGG]
+        << "), nWall " << c[hs::WALL]
+        << ", suppressed " << c[hs::SUPPRESSED]
+        << ", particles " << nParticles
+        << ", agglomerates " << nAgglomerates << endl;
+}
+
+
+// ************************************************************************* //

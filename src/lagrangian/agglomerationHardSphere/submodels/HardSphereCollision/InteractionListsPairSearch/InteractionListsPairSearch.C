@@ -1,0 +1,184 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "InteractionListsPairSearch.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class ParcelType>
+void Foam::InteractionListsPairSearch<ParcelType>::checkLists
+(
+    const scalar distance
+)
+{
+    if (il_.valid() && distance <= distance_)
+    {
+        return;
+    }
+
+    // Some headroom so that growing agglomerates do not rebuild every step
+    distance_ = max(1.5*distance, minDistance_);
+
+    Info<< "    Hard-sphere interaction lists, distance " << distance_
+        << " m" << endl;
+
+    il_.reset
+    (
+        new InteractionLists<ParcelType>(mesh_, distance_, false, UName_)
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::InteractionListsPairSearch<ParcelType>::InteractionListsPairSearch
+(
+    const polyMesh& mesh,
+    const word& UName,
+    const scalar minDistance
+)
+:
+    mesh_(mesh),
+    UName_(UName),
+    minDistance_(minDistance),
+    il_(nullptr),
+    distance_(0),
+    referred_(),
+    referredX1_(),
+    cellStart_(),
+    cellParcels_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+template<class Visitor>
+void Foam::InteractionListsPairSearch<ParcelType>::search
+(
+    const UList<ParcelType*>& parcels,
+    const UList<point>& x1,
+    const List<DynamicList<ParcelType*>>& cellOccupancy,
+    const scalar distance,
+    Visitor& visit
+)
+{
+    checkLists(distance);
+    InteractionLists<ParcelType>& il = il_();
+
+    const label n = parcels.size();
+    const label nCells = mesh_.nCells();
+
+    // Parcels per cell (counting sort)
+    cellStart_.setSize(nCells + 1);
+    cellStart_ = 0;
+    for (const ParcelType* p : parcels)
+    {
+        ++cellStart_[p->cell() + 1];
+    }
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        cellStart_[celli + 1] += cellStart_[celli];
+    }
+    cellParcels_.setSize(n);
+    {
+        labelList fill(SubList<label>(cellStart_, nCells));
+        forAll(parcels, i)
+        {
+            cellParcels_[fill[parcels[i]->cell()]++] = i;
+        }
+    }
+
+    // Referred parcels: send now, receive after the real-real search
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    const label startOfRequests = Pstream::nRequests();
+    il.sendReferredData(cellOccupancy, pBufs);
+
+    // Real-real: same cell and the direct interaction list
+    const labelListList& dil = il.dil();
+    forAll(dil, celli)
+    {
+        for (label a = cellStart_[celli]; a < cellStart_[celli + 1]; ++a)
+        {
+            const label i = cellParcels_[a];
+
+            for (label b = a + 1; b < cellStart_[celli + 1]; ++b)
+            {
+                visit(i, cellParcels_[b]);
+            }
+
+            for (const label cellj : dil[celli])
+            {
+                for
+                (
+                    label b = cellStart_[cellj];
+                    b < cellStart_[cellj + 1];
+                    ++b
+                )
+                {
+                    visit(i, cellParcels_[b]);
+                }
+            }
+        }
+    }
+
+    // Real-referred
+    il.receiveReferredData(pBufs, startOfRequests);
+
+    const labelListList& ril = il.ril();
+    const List<IDLList<ParcelType>>& referred = il.referredParticles();
+
+    referred_.clear();
+    referredX1_.clear();
+
+    forAll(ril, refCelli)
+    {
+        for (const ParcelType& pj : referred[refCelli])
+        {
+            const label k = referred_.size();
+            referred_.append(&pj);
+            referredX1_.append(pj.position());
+
+            for (const label celli : ril[refCelli])
+            {
+                for
+                (
+                    label a = cellStart_[celli];
+                    a < cellStart_[celli + 1];
+                    ++a
+                )
+                {
+                    visit(cellParcels_[a], n + k);
+                }
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

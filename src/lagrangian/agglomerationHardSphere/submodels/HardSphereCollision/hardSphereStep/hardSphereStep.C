@@ -1,0 +1,140 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "hardSphereStep.H"
+#include "collisionOutcome.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::hardSphereStep::counterType>
+Foam::hardSphereStep::counterNames
+({
+    { counterType::COL, "nCol" },
+    { counterType::COL_FIRST, "nColFirst" },
+    { counterType::COL_REPEAT, "nColRepeat" },
+    { counterType::COL_OVERLAP, "nColOverlapStart" },
+    { counterType::AGG, "nAgg" },
+    { counterType::AGG_FIRST, "nAggFirst" },
+    { counterType::AGG_REPEAT, "nAggRepeat" },
+    { counterType::AGG_OVERLAP, "nAggOverlapStart" },
+    { counterType::SUPPRESSED, "nSuppressed" },
+    { counterType::SKIP_SEPARATING, "nSkipSeparating" },
+    { counterType::WALL, "nWall" },
+    { counterType::WALL_CENTRE, "nWallCentre" },
+    { counterType::STICKING, "nSticking" },
+    { counterType::CASE_II, "nCaseII" },
+    { counterType::ENERGY_GAIN, "nEnergyGain" },
+    { counterType::SPIN_CLAMPED, "nSpinClamped" },
+    { counterType::MAM_CRIT_II, "nMAMslidingCritII" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::hardSphereStep::hardSphereStep()
+:
+    counts(N_COUNTERS, Zero),
+    sumDeltaL(0),
+    energyGain(0),
+    eventPoint(),
+    eventCategory(),
+    eventAgglomerates(),
+    mass0(-1),
+    nPrimaries0(-1)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::hardSphereStep::reset()
+{
+    counts = 0;
+    sumDeltaL = 0;
+    energyGain = 0;
+    eventPoint.clear();
+    eventCategory.clear();
+    eventAgglomerates.clear();
+    mass0 = -1;
+    nPrimaries0 = -1;
+}
+
+
+void Foam::hardSphereStep::count
+(
+    const label category,
+    const point& xc,
+    const collisionOutcome* outcome
+)
+{
+    ++counts[COL];
+    ++counts[COL_FIRST + category];
+
+    const bool agglomerates = outcome && outcome->agglomerates;
+
+    eventPoint.append(xc);
+    eventCategory.append(category);
+    eventAgglomerates.append(agglomerates);
+
+    if (!outcome)
+    {
+        return;
+    }
+
+    const collisionOutcome& o = *outcome;
+
+    if (agglomerates)
+    {
+        ++counts[AGG];
+        ++counts[AGG_FIRST + category];
+
+        if (o.dKEformation > 0)
+        {
+            ++counts[ENERGY_GAIN];
+            energyGain += o.dKEformation;
+        }
+    }
+    if (o.isSticking())
+    {
+        ++counts[STICKING];
+    }
+    if (o.branch == collisionOutcome::CASE_II)
+    {
+        ++counts[CASE_II];
+        sumDeltaL += o.deltaL;
+    }
+    if (o.spinClamped)
+    {
+        ++counts[SPIN_CLAMPED];
+    }
+    if (!o.isSticking() && o.critI && o.critII)
+    {
+        ++counts[MAM_CRIT_II];
+    }
+}
+
+
+// ************************************************************************* //

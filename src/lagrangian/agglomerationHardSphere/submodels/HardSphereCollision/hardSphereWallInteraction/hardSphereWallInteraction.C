@@ -1,0 +1,251 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "hardSphereWallInteraction.H"
+#include "wallPolyPatch.H"
+#include "particleKeyedModel.H"
+#include "randomStreams.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::hardSphereWallInteraction::contactType>
+Foam::hardSphereWallInteraction::contactNames
+({
+    { contactType::RADIUS, "radius" },
+    { contactType::CENTRE, "centre" },
+});
+
+
+const Foam::Enum<Foam::hardSphereWallInteraction::correctionType>
+Foam::hardSphereWallInteraction::correctionNames
+({
+    { correctionType::REFLECT, "reflect" },
+    { correctionType::NONE, "none" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::hardSphereWallInteraction::impact
+(
+    const label patchi,
+    const vector& nw,
+    const vector& Uw,
+    particle& p,
+    const scalar eventFraction
+) const
+{
+    keyedRandom rnd
+    (
+        randomSeed_, randomStreams::wallImpact, p.origProc, p.origId,
+        mesh_.time().timeIndex(), eventFraction
+    );
+    models_[patchi].impact(nw, Uw, p.d, p.U, p.omega, rnd);
+
+    if (reflectSGS_ && p.UTurb)
+    {
+        particleKeyedModel::reflect(*p.UTurb, nw);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::hardSphereWallInteraction::hardSphereWallInteraction
+(
+    const dictionary& dict,
+    const volVectorField& Uc,
+    const particleKeyedModel* keyedDispersion
+)
+:
+    mesh_(Uc.mesh()),
+    Uc_(Uc),
+    models_(),
+    contact_(contactNames.getOrDefault("wallContact", dict, RADIUS)),
+    correction_
+    (
+        correctionNames.getOrDefault("wallPositionCorrection", dict, REFLECT)
+    ),
+    randomSeed_(dict.getOrDefault<label>("randomSeed", 0)),
+    reflectSGS_(keyedDispersion && keyedDispersion->reflectAtWalls())
+{
+    // One wall model per wall patch
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    models_.setSize(pbm.size());
+
+    const dictionary& wallsDict = dict.subDict("walls");
+
+    forAll(pbm, patchi)
+    {
+        if (!isA<wallPolyPatch>(pbm[patchi]))
+        {
+            continue;
+        }
+
+        const entry* ePtr =
+            wallsDict.findEntry(pbm[patchi].name(), keyType::REGEX);
+
+        if (!ePtr || !ePtr->isDict())
+        {
+            FatalIOErrorInFunction(wallsDict)
+                << "No wall model for the wall patch "
+                << pbm[patchi].name() << ": add a dictionary entry "
+                << pbm[patchi].name() << " (or a matching regular"
+                << " expression) to walls. Wall models: "
+                << wallCollisionModel::
+                   dictionaryConstructorTablePtr_->sortedToc()
+                << exit(FatalIOError);
+        }
+
+        Info<< "    Wall patch " << pbm[patchi].name() << ": wallModel "
+            << ePtr->dict().get<word>("wallModel") << endl;
+
+        models_.set(patchi, wallCollisionModel::New(ePtr->dict()));
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::hardSphereWallInteraction::resultType
+Foam::hardSphereWallInteraction::contactAtRadius
+(
+    const point& x,
+    const labelUList& wallFaces,
+    const scalar dt,
+    particle& p,
+    bool& moved,
+    point& xNew
+) const
+{
+    moved = false;
+
+    if (wallFaces.empty())
+    {
+        return NO_CONTACT;
+    }
+
+    const scalar r = 0.5*p.d;
+
+    // Nearest wall face
+    scalar h = GREAT;
+    label nearestFace = -1;
+    point nearest(Zero);
+    for (const label facei : wallFaces)
+    {
+        const pointHit ph =
+            mesh_.faces()[facei].nearestPoint(x, mesh_.points());
+
+        if (ph.distance() < h)
+        {
+            h = ph.distance();
+            nearestFace = facei;
+            nearest = ph.rawPoint();
+        }
+    }
+
+    if (h >= r)
+    {
+        return NO_CONTACT;
+    }
+
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const label patchi = pbm.whichPatch(nearestFace);
+    const polyPatch& pp = pbm[patchi];
+    const label patchFacei = pp.whichFace(nearestFace);
+
+    vector nw(x - nearest);
+    if (h > SMALL*r)
+    {
+        nw /= h;
+    }
+    else
+    {
+        nw = -pp.faceNormals()[patchFacei];
+    }
+
+    const vector& Uw = Uc_.boundaryField()[patchi][patchFacei];
+    const scalar un = (p.U - Uw) & nw;
+    const bool reflect = (correction_ == REFLECT);
+
+    if (un < 0)
+    {
+        const vector U0(p.U);
+        impact(patchi, nw, Uw, p, 2.0);
+
+        if (reflect)
+        {
+            // Back to the contact, then on with the new velocity
+            const scalar tau = min((r - h)/(-un), dt);
+            xNew = x + tau*(p.U - U0);
+            moved = true;
+        }
+        return IMPACT;
+    }
+
+    if (reflect)
+    {
+        // Overlapping without approaching: out to one radius
+        xNew = x + (r - h)*nw;
+        moved = true;
+    }
+    return OVERLAP;
+}
+
+
+bool Foam::hardSphereWallInteraction::hitCentre
+(
+    const label facei,
+    particle& p,
+    const scalar f
+) const
+{
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const label patchi = pbm.whichPatch(facei);
+    const polyPatch& pp = pbm[patchi];
+    const label patchFacei = pp.whichFace(facei);
+    const vector nw(-pp.faceNormals()[patchFacei]);
+    const vector& Uw = Uc_.boundaryField()[patchi][patchFacei];
+
+    if (((p.U - Uw) & nw) < 0)
+    {
+        impact(patchi, nw, Uw, p, f);
+        return true;
+    }
+
+    return false;
+}
+
+
+void Foam::hardSphereWallInteraction::info(Ostream& os) const
+{
+    os  << "wallContact " << contactNames[contact_]
+        << ", wallPositionCorrection " << correctionNames[correction_];
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,78 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "FluidTorqueRotation.H"
+#include "particleKernels.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::FluidTorqueRotation<CloudType>::FluidTorqueRotation
+(
+    const dictionary&,
+    CloudType& owner
+)
+:
+    ParticleRotationModel<CloudType>(owner)
+{
+    Info<< "    particleRotation: fluid torque and spin update" << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::FluidTorqueRotation<CloudType>::correct
+(
+    parcelType& p,
+    const trackingData& td,
+    const scalar dt
+) const
+{
+    const vector vorticity
+    (
+        td.curlUcInterp().interpolate(p.coordinates(), p.currentTetIndices())
+    );
+
+    const scalar ReR =
+        particleKernels::rotationalReynolds
+        (
+            0.5*vorticity - p.omega(), p.d(), td.rhoc(), td.muc()
+        );
+
+    p.omega() =
+        particleKernels::spinUpdate
+        (
+            p.omega(),
+            vorticity,
+            dt,
+            particleKernels::spinTimeScale(p.rho(), p.d(), td.muc(), ReR)
+        );
+}
+
+
+// ************************************************************************* //
