@@ -20,7 +20,7 @@ HEADER = """FoamFile
 }}
 """
 
-# Quartz, 12 um, Tab. 1 (physics.md 0.6): the kernel of the utility tests
+# Quartz, 12 um, Tab. 1 (doc/models.md 0.6): the kernel of the utility tests
 KERNEL = """
     material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.612985e9; delta0 2e-10;
                rho0 2200; }

@@ -3,7 +3,7 @@ on small scripted cases: frozen fluid at rest, no particle forces, so the
 particles move in straight lines between events.
 
 Independent expectations: the kernel utility hardSphereCollide for pair
-collisions; the smooth-wall formulas of physics.md 7.1 written out here;
+collisions; the smooth-wall formulas of doc/models.md 7.1 written out here;
 kinetic theory (collision rate of a hard-sphere gas, Haff's cooling law);
 exact equality for restart, repetition and decomposition."""
 
@@ -41,7 +41,8 @@ def pair_particles(v, theta_deg, gap=1e-6, centre=(C, C, C), spin=None):
 
 
 def contact_positions(p1, p2, R=D):
-    """Positions at first contact for constant velocities (physics.md 6.3)."""
+    """Positions at first contact for constant velocities
+    (doc/models.md 6.3)."""
     x1, x2 = np.array(p1["x"]), np.array(p2["x"])
     u1, u2 = np.array(p1["U"]), np.array(p2["U"])
     xr, vr = x2 - x1, u2 - u1
@@ -149,7 +150,7 @@ def test_pair_across_processors(case_dir, foam_env, name):
 
 
 def smooth_wall(U, omega, d, n, en, et, muSt, muKin):
-    """physics.md 7.1, written out independently of the C++ code."""
+    """doc/models.md 7.1, written out independently of the C++ code."""
     U, omega, n = map(np.asarray, (U, omega, n))
     un = U @ n
     uc = U - un * n - 0.5 * d * np.cross(omega, n)
@@ -439,8 +440,8 @@ def test_encounter_release_makes_a_new_first_contact(case_dir, foam_env,
                                                       release):
     """A head-on pair rebounds, both hit the walls and meet again. After
     separating beyond 1.1 (r1 + r2) the second meeting is a first contact
-    (cases.md B.4); without release it is a repeat of the last partner
-    (physics.md 6.7, unlimited memory)."""
+    (doc/cases.md B.4); without release it is a repeat of the last partner
+    (doc/models.md 6.7, unlimited memory)."""
     parts = pair_particles(3e-3, 0)
     box_case(case_dir, L=(L, L, L), particles=parts, dt=1e-4, end_time=0.1)
     set_hs(case_dir, f"encounterRelease {release};")

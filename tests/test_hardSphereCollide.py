@@ -1,5 +1,5 @@
 """The hardSphereCollide utility end to end: dictionary in, JSON out,
-against the reference collisions of physics.md section 12.3 (quartz, 12 um,
+against the reference collisions of doc/models.md 12.3 (quartz, 12 um,
 Tab. 1, CSM); clear errors for particles not in contact or not
 approaching."""
 

@@ -1,4 +1,4 @@
-"""tutorials/shearFlowValidation: the theory of cases.md B.2 as coded in
+"""tutorials/shearFlowValidation: the theory of doc/cases.md B.2 as coded in
 the post-processing (hand values of the spec), and the `ci` preset run end
 to end in a copy of the tutorial (about 4-5 minutes on 2 cores).
 
@@ -29,7 +29,7 @@ import shearFlow  # noqa: E402
 # ----------------------------------------------------------------- theory
 
 def test_alpha_theory_matches_spec_table():
-    """cases.md B.2: f(1, 2, 4 um) = 0.95, 0.87, 0.79 (van de Ven & Mason),
+    """doc/cases.md B.2: f(1, 2, 4 um) = 0.95, 0.87, 0.79 (van de Ven & Mason),
     f(25 um) = 0.5785, the group 1.4538e-7 and alpha_th at the tabulated
     diameters."""
     assert shearFlow.f_vdVM([1e-6, 2e-6, 4e-6]) == pytest.approx(
@@ -101,7 +101,7 @@ def test_ci_regression_table(ci_results):
 
 def test_ci_first_contacts_match_saffman_turner(ci_results):
     """Ghost contacts, first counting, t*gammaDot 1 -> 71: within 3 sqrt(N)
-    of (1/2) K_ST n0^2 V (t - t0) (cases.md B.6), and a constant slope in
+    of (1/2) K_ST n0^2 V (t - t0) (doc/cases.md B.6), and a constant slope in
     each half."""
     _, s, _ = ci_results
     det = s["detect"]
@@ -124,7 +124,7 @@ def test_ci_conservation_and_decay(ci_results):
         assert r["Np_final_over_Np0"] == pytest.approx(
             1 - r["N_agg"] / s["N0"], abs=1e-12)
         assert r["Np_max_deviation_consistent"] <= 0.05
-        # paper counting: repeated contacts dominate (cases.md B.4)
+        # paper counting: repeated contacts dominate (doc/cases.md B.4)
         assert r["N_col"] > 10 * r["N_col_first"]
     rows = {r["check"]: r for r in s["regression"]}
     assert all(r["status"] != "FAIL" for r in rows.values())

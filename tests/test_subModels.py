@@ -5,7 +5,7 @@ compares the cloud with an independent number.
 - spin relaxation to half the fluid vorticity with rho_p d^2/(60 mu) (1 %),
   and frozenFlow leaves the fluid field bit-identical;
 - Saffman-Mei and rotation lift in one short step against the formulas of
-  physics.md 8.2-8.3 (2 %);
+  doc/models.md 8.2-8.3 (2 %);
 - Pozorski-Apte SGS velocity: stationary variance 2k/3 and Lagrangian time
   CT Delta/sigma (5 %);
 - two-way coupling: fluid plus particle momentum conserved in a closed
@@ -161,7 +161,7 @@ def test_saffman_mei_lift(case_dir, foam_env):
     gamma, us = 1000.0, 0.5
     Fy, d = lift_case(case_dir, "{ SchillerNaumannDrag; "
                       "SaffmanMeiLiftForce { U U; } }", (0, 0, 0), gamma, us)
-    # physics.md 8.2: F = 1.615 d^2 (rho mu)^1/2 |w|^-1/2 f_Mei (u_s x w)
+    # doc/models.md 8.2: F = 1.615 d^2 (rho mu)^1/2 |w|^-1/2 f_Mei (u_s x w)
     rep = us * d / NU
     res = gamma * d**2 / NU
     beta = 0.5 * res / rep
@@ -295,7 +295,7 @@ def test_two_way_coupling_conserves_momentum(case_dir, foam_env):
 
 @pytest.mark.parametrize("flow", ["couette", "poiseuille"])
 def test_sgs_tracers_well_mixed(case_dir, foam_env, flow):
-    """Well-mixed diagnostic (physics.md 9): tracers, initially uniform in a
+    """Well-mixed diagnostic (doc/models.md 9): tracers, initially uniform in a
     frozen laminar channel flow with Smagorinsky nu_t, after 10 Lagrangian
     times at the wall.
 

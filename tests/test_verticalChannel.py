@@ -1,4 +1,4 @@
-"""tutorials/verticalChannel, smoke preset (cases.md A.11), serial and on 2
+"""tutorials/verticalChannel, smoke preset (doc/cases.md A.11), serial and on 2
 MPI ranks: every stage (unladen, release, dispersion, agglomeration) of
 configuration C1 (EAM and MAM as two clouds of one run) and C2 (sub-models:
 one cloud per run), through the tutorial's own ./Allrun in a copy.
@@ -6,7 +6,7 @@ one cloud per run), through the tutorial's own ./Allrun in a copy.
 Checks against independent expectations:
 - the 50 seeded head-on pairs of C1: the 25 at 0.3 mm/s agglomerate and the
   25 at 20 mm/s rebound under both models (below and above the critical
-  velocities 2.34 / 0.86 mm/s of physics.md 12.5), identified by their ids
+  velocities 2.34 / 0.86 mm/s of doc/models.md 12.5), identified by their ids
   in the final cloud; N_col >= 50, N_agg = 25, N_p = 2100 - 25;
 - the statistics files are complete (one row per agglomeration step) and
   consistent: counters non-decreasing, particle mass conserved to
@@ -164,7 +164,7 @@ def test_serial_and_parallel_agree(smoke_runs):
 
 
 def test_restart_reproduces_the_agglomeration_stage(smoke_runs, tmp_path):
-    """cases.md A.11: C1 (no random numbers after the release) restarted
+    """doc/cases.md A.11: C1 (no random numbers after the release) restarted
     from its first write of the agglomeration stage (10 of 30 steps)
     reproduces the counters and the particles of the uninterrupted run."""
     from conftest import foam_bin, run

@@ -2,8 +2,8 @@
 Description
     The no-cohesion hard-sphere collision (AB16 Eqs. 1-17): restitution,
     sticking and sliding slip laws, the sticking/sliding boundary, the
-    elastic smooth limit, and the EAM/MAM limits e_n = 1 (physics.md
-    section 12.1, T4-T8, T14).
+    elastic smooth limit, and the EAM/MAM limits e_n = 1 (doc/models.md
+    12.1, T4-T8, T14).
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"

@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
 Description
-    Invariants of the kernels over random collisions (physics.md section
+    Invariants of the kernels over random collisions (doc/models.md
     12.1): T1 momentum, T2 angular momentum, T3 kinetic energy, T10 EAM
     rebound energy, T11 Eq. 21 right-hand side, T12 dumbbell energy, T15
     MAM rebound velocity, T16 MAM sliding, T17 symmetries; T9 Hiller limit,

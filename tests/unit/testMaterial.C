@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
 Description
     Material and coefficient input: yield pressure factor c(nu) of AB16
-    App. A against physics.md section 2.2, and the bad-input errors.
+    App. A against doc/models.md 2.2, and the bad-input errors.
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
@@ -51,7 +51,7 @@ const std::string base =
 
 TEST(Material, YieldPressureFactorQuartz)
 {
-    // physics.md section 2.2 table: nu = 0.17 -> zeta 0.438, c 1.46635
+    // doc/models.md 2.2 table: nu = 0.17 -> zeta 0.438, c 1.46635
     EXPECT_TRUE(near(hardSphereMaterial::yieldPressureFactor(0.17),
         1.46635, 1e-5));
     EXPECT_TRUE(near(hardSphereMaterial::yieldDepth(0.17), 0.438, 2e-3));
@@ -73,7 +73,7 @@ TEST(Material, PMaxFromSigmaY)
         " rho0 2200;"
     ));
     const hardSphereMaterial mat(dict);
-    // physics.md section 0.6: p = 1.612985e9 Pa
+    // doc/models.md 0.6: p = 1.612985e9 Pa
     EXPECT_TRUE(near(mat.pMax(), 1.612985e9, 1e-5));
     // EHat = E/(2(1 - nu^2)) = 3.70714e10 Pa
     EXPECT_TRUE(near(mat.EHat(), 3.70714e10, 1e-5));

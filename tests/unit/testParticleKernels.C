@@ -24,7 +24,7 @@ License
     along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
 
 Description
-    Unit tests of the fluid-particle kernels (physics.md 8, 9; checks
+    Unit tests of the fluid-particle kernels (doc/models.md 8, 9; checks
     S3-S8 of 12.2), the keyed random numbers and the sandgrain wall.
 
 \*---------------------------------------------------------------------------*/
@@ -268,7 +268,7 @@ namespace
     const collisionCoefficients roughCoeffs(0.9, 0.3, 0.5, 0.4);
 }
 
-// S3: sigma_gamma for Rz = 10 um, C = 3 (physics.md 7.2)
+// S3: sigma_gamma for Rz = 10 um, C = 3 (doc/models.md 7.2)
 TEST(SandgrainWall, SigmaGammaValues)
 {
     const sandgrainWall w1(roughCoeffs, 10e-6, 3);

@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
 Description
-    The 15 reference collisions of physics.md section 12.3 (quartz, 12 um,
+    The 15 reference collisions of doc/models.md 12.3 (quartz, 12 um,
     Tab. 1, CSM) for the models none, EAM and MAM and the variants, plus
     the intermediate magnitudes of section 12.4. Tolerance: 1e-4 relative
     with absolute floors 1e-10 m/s and 1e-8 rad/s for entries printed as 0.
@@ -19,7 +19,7 @@ struct refRow
     scalar v, theta, w1, w2;
 };
 
-// physics.md section 12.3, rows 1-15
+// doc/models.md 12.3, rows 1-15
 const refRow rows[15] =
 {
     {1e-4, 0, 0, 0}, {5e-4, 0, 0, 0}, {1e-3, 0, 0, 0}, {2e-3, 0, 0, 0},
@@ -385,7 +385,7 @@ TEST(ReferenceIntermediates, Section12_4HeadOn1mmps)
 
 TEST(ReferenceIntermediates, Alletto2014Row14CaseIIIRebound)
 {
-    // physics.md section 12.1: row 14 takes the case-III rebound branch;
+    // doc/models.md 12.1: row 14 takes the case-III rebound branch;
     // in-plane relative velocity vanishes, spins scale by the same factor
     // in [0, 1], and KE(no cohesion) - KE = dE_vdW
     const dictionary dict(kernelDict("EAMAlletto2014"));
@@ -418,7 +418,7 @@ TEST(ReferenceIntermediates, Alletto2014Row14CaseIIIRebound)
 
 TEST(ReferenceIntermediates, A6CaseIIAngularMomentumDefect)
 {
-    // physics.md section 5.1: row 15 (EAM case II) changes the pair
+    // doc/models.md 5.1: row 15 (EAM case II) changes the pair
     // angular momentum by m^ ell (1 - k_t)(w.t_E) (n x t_E), non-zero; the
     // spins are those of the collision without cohesion
     const dictionary dict(kernelDict("EAM"));

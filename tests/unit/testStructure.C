@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
 Description
-    Agglomerate structure and formation (physics.md sections 4, 5.2,
+    Agglomerate structure and formation (doc/models.md 4, 5.2,
     12.1 T18, T19): VSM/CSM geometry, the packing table, and the known
     kinetic-energy gain at formation (A7), kept on purpose.
 \*---------------------------------------------------------------------------*/
@@ -73,7 +73,7 @@ TEST(Structure, T18AgglomerateGeometry)
 
 TEST(Structure, CSMPackingTableDiameters)
 {
-    // physics.md section 4.3: d_ag/d0 column (exact f_pack; table 5 digits)
+    // doc/models.md 4.3: d_ag/d0 column (exact f_pack; table 5 digits)
     const hardSphereCollisionKernel csm(kernelDict("EAM", "CSM"));
     const structureModel& s = csm.structure();
     EXPECT_TRUE(near(s.diameter(2, 1), 1.957034, 1e-6));

@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
     Unit tests of the mesh-free pieces of the hard-sphere cloud: the
-    contact-time quadratic (physics.md 6.3) and the smooth-wall impact
-    (physics.md 7.1), against hand-computed values.
+    contact-time quadratic (doc/models.md 6.3) and the smooth-wall impact
+    (doc/models.md 7.1), against hand-computed values.
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"

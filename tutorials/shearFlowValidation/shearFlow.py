@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """shearFlowValidation: set-up and post-processing of the laminar shear-flow
-validation (paper Appendix B; cases.md B.1-B.6).
+validation (paper Appendix B; doc/cases.md B.1-B.6).
 
     shearFlow.py settings PRESET RUN   caseSettings of one run (stdout)
     shearFlow.py init CASE             exact Couette profile and particles
@@ -28,7 +28,7 @@ sys.path.insert(0, str(Path(os.environ.get("AGGLO_PROJECT_DIR",
 
 from aggloTools import foamio  # noqa: E402
 
-# Physical data of cases.md B.1 (the case files hold the same values)
+# Physical data of doc/cases.md B.1 (the case files hold the same values)
 H = 2.28e-21        # Hamaker constant of polystyrene [J]
 MU = 1.0e-3         # water [Pa s]
 RHO_P = 1050.0      # polystyrene [kg/m3]
@@ -40,7 +40,7 @@ RUNS = ("detect", "EAM", "MAM", "bounce")
 
 def f_vdVM(d):
     """van de Ven & Mason's f: the tabulated 0.95, 0.87, 0.79 at d = 1, 2,
-    4 um lie on a line in ln d (cases.md B.2); a quadratic fit is this
+    4 um lie on a line in ln d (doc/cases.md B.2); a quadratic fit is this
     line."""
     return 0.95 - 0.08 * np.log2(np.asarray(d, float) / 1e-6)
 
@@ -260,7 +260,7 @@ def post(preset, runs_dir=None, out_dir=None):
         "firstContactRate_ST": 0.5 * K_ST * n0**2 * V, "runs": {}}
 
     # Expected first contacts over the EAM/MAM runs: the statistical scale
-    # of alpha (cases.md B.5)
+    # of alpha (doc/cases.md B.5)
     phys = [r for r in ("EAM", "MAM") if r in runs]
     t_end = max((runs[r].t[-1] for r in phys), default=0.0)
     n_first_exp = 0.5 * K_ST * n0**2 * V * t_end

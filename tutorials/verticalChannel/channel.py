@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """verticalChannel: set-up and post-processing of the paper's main case
-(downward turbulent channel flow; cases.md Part A).
+(downward turbulent channel flow; doc/cases.md Part A).
 
     channel.py settings PRESET CONFIG STAGE [MODEL ...]
                                   caseSettings of one stage (stdout)
@@ -10,10 +10,10 @@
                                   at its latest time: seeded uniform random
                                   non-overlapping positions at least d/2
                                   from the walls, the local fluid velocity,
-                                  no spin, ids 0..N-1 (cases.md A.1)
+                                  no spin, ids 0..N-1 (doc/cases.md A.1)
     channel.py seedPairs CASE CLOUD ...
                                   the seeded pairs of the smoke preset
-                                  (cases.md A.11) at the latest time
+                                  (doc/cases.md A.11) at the latest time
     channel.py progress CASE      stage, simulated time and ETA of a run
     channel.py post PRESET        results/PRESET: summary.json,
                                   regression.txt, plots (exit 1 on a FAIL)
@@ -339,7 +339,7 @@ def _field_class(path):
 
 
 def seed_pairs(case, clouds):
-    """Add the smoke preset's seeded pairs (cases.md A.11) to the clouds of
+    """Add the smoke preset's seeded pairs (doc/cases.md A.11) to the clouds of
     the case's latest time: nPairs pairs in |y| < delta/4 with a centre gap
     of 1 nm along a random direction n; the partners move with the fluid
     velocity at the midpoint -/+ du/2 n (head-on approach): du = 0.3 mm/s

@@ -27,7 +27,7 @@ TABLE_D6 = {
     "C4": {"fcol": {"EAM": 1.24e3, "MAM": 1.23e3},
            "fagg": {"EAM": 2.1e1, "MAM": 1.36e1}},
 }
-# Case ratios (cases.md A.9): numerator, denominator, what it tests
+# Case ratios (doc/cases.md A.9): numerator, denominator, what it tests
 RATIOS = (("C2", "C1", "with/without sub-models"),
           ("C3", "C2", "rough/smooth wall"),
           ("C4", "C2", "4 um/12 um"))
@@ -89,7 +89,7 @@ def analyse_run(p, adir, cloud):
         r[f"sigmaPoisson_{key}"] = sp
         r[f"events_{key}"] = dn
         r[f"N_{key}_end"] = float(n[-1])
-        # the whole stage too (cases.md A.8: reported in addition)
+        # the whole stage too (doc/cases.md A.8: reported in addition)
         r[f"f_{key}_wholeStage"] = float(n[-1] / T[-1])
     r["alpha_f"] = r["f_agg"] / r["f_col"] if r["f_col"] > 0 else None
     r["alpha_end"] = (r["N_agg_end"] / r["N_col_end"]
@@ -173,7 +173,7 @@ def read_profiles(p, adir, cloud):
 
 def u_tau(p, case):
     """u_tau from the mean driving gradient over the second half of the
-    stage in case (fluid check of cases.md A.10): u_tau^2 = delta <G>."""
+    stage in case (fluid check of doc/cases.md A.10): u_tau^2 = delta <G>."""
     log = (case / "log.aggloPimpleFoam").read_text(errors="replace")
     g = np.array([float(x) for x in
                   re.findall(r"pressure gradient = ([-0-9.eE+]+)", log)])
@@ -207,7 +207,7 @@ def regression(p, res):
             return
         tol = max(3 * sig, REL_TOL * ref)
         if sig > REL_TOL * sim:
-            # cases.md A.8/A.9: compare only what the preset resolves
+            # doc/cases.md A.8/A.9: compare only what the preset resolves
             rows.append((name, sim, sig, ref, tol, "n/r",
                          note or "not resolvable at this preset (sigma ="
                          f" {sig / sim:.0%} of the ratio)"))
@@ -217,7 +217,7 @@ def regression(p, res):
                      note))
 
     def direction(name, r, s, sign):
-        """cases.md A.9 direction checks: r - 1 must have the sign
+        """doc/cases.md A.9 direction checks: r - 1 must have the sign
         `sign` wherever |r - 1| > 3 sigma."""
         if r is None:
             rows.append((name, None, None, None, None, "n/a", "no events"))
@@ -263,7 +263,7 @@ def regression(p, res):
             ref = ((pa["fagg"][m] / pa["fcol"][m])
                    / (pb["fagg"][m] / pb["fcol"][m]))
             add(f"{m} alpha_f {a}/{b} ({what})", r, s, ref)
-    # direction checks (cases.md A.9)
+    # direction checks (doc/cases.md A.9)
     for a, b, q, sign in (("C2", "C1", "col", -1), ("C2", "C1", "agg", -1),
                           ("C3", "C2", "col", -1), ("C3", "C2", "agg", 1),
                           ("C4", "C2", "col", -1)):
