@@ -49,6 +49,19 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
     DynamicList<vector> lattice;
     DynamicList<label> wallFaces;
 
+    // One vector per pair of opposite patches
+    auto addUnique = [&lattice](const vector& s)
+    {
+        for (const vector& e : lattice)
+        {
+            if (mag(e - s) < SMALL*mag(s) || mag(e + s) < SMALL*mag(s))
+            {
+                return;
+            }
+        }
+        lattice.append(s);
+    };
+
     for (const polyPatch& pp : pbm)
     {
         if (isA<wallPolyPatch>(pp))
@@ -76,20 +89,7 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
             continue;
         }
 
-        // One vector per pair of opposite patches
-        const vector s(cycPtr->separation()[0]);
-        bool found = false;
-        for (const vector& e : lattice)
-        {
-            if (mag(e - s) < SMALL*mag(s) || mag(e + s) < SMALL*mag(s))
-            {
-                found = true;
-            }
-        }
-        if (!found)
-        {
-            lattice.append(s);
-        }
+        addUnique(cycPtr->separation()[0]);
     }
 
     // The same lattice on every processor (cyclics may be on some only)
@@ -102,18 +102,7 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
     {
         for (const vector& s : l)
         {
-            bool found = false;
-            for (const vector& e : lattice)
-            {
-                if (mag(e - s) < SMALL*mag(s) || mag(e + s) < SMALL*mag(s))
-                {
-                    found = true;
-                }
-            }
-            if (!found)
-            {
-                lattice.append(s);
-            }
+            addUnique(s);
         }
     }
 
