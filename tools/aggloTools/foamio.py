@@ -73,6 +73,15 @@ def read_dict(path):
     return parse_dict(Path(path).read_text())
 
 
+def check_keys(d, valid, where):
+    """Stop with a message naming the entry, the dictionary and the valid
+    entries if the parsed dictionary d holds an entry not in valid."""
+    for key in d:
+        if key not in valid:
+            raise SystemExit(f"unknown entry '{key}' in {where}; valid "
+                             "entries: " + " ".join(sorted(valid)))
+
+
 def write_foamfile(path, cls, loc, obj, body):
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)

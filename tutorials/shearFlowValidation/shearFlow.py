@@ -74,8 +74,19 @@ def decay_theory(np0, dncol, np_sim, alpha, form="consistent"):
 
 # ---------------------------------------------------------------- settings
 
+PRESET_KEYS = {"nx", "LxByDelta", "nParticles", "endGamma",
+               "detectEndGamma", "detectDtGamma", "writes"}
+COMMON_KEYS = {"gammaDot", "delta", "LzByDelta", "ny", "nz", "dParticle",
+               "seed", "dtGamma", "detectDtGamma", "countFromGamma"}
+
+
 def presets():
-    return foamio.read_dict(HERE / "presets")
+    """The presets file, every entry checked."""
+    ps = foamio.read_dict(HERE / "presets")
+    for name, p in ps.items():
+        foamio.check_keys(p, COMMON_KEYS if name == "common"
+                          else PRESET_KEYS, f"presets/{name}")
+    return ps
 
 
 def settings(preset, run):

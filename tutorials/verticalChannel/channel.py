@@ -55,9 +55,31 @@ def _nums(v):
     return [float(str(x).strip("()")) for x in v if str(x).strip("()")]
 
 
+COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
+               "ddtScheme", "seed"}
+PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
+               "unladen", "release", "dispersion", "agglomeration", "window",
+               "writeStar", "profileBins", "seededPairs"} | COMMON_KEYS
+CONFIGURATION_KEYS = {"subModels", "wall", "d", "en"}
+
+
+def read_presets():
+    """The presets file, every entry checked."""
+    d = foamio.read_dict(HERE / "presets")
+    for name, p in d.items():
+        if name == "configurations":
+            for c, cd in p.items():
+                foamio.check_keys(cd, CONFIGURATION_KEYS,
+                                  f"presets/configurations/{c}")
+        else:
+            foamio.check_keys(p, COMMON_KEYS if name == "common"
+                              else PRESET_KEYS, f"presets/{name}")
+    return d
+
+
 def preset(name):
     """The merged settings of a preset (common values first)."""
-    d = foamio.read_dict(HERE / "presets")
+    d = read_presets()
     if name not in d or name in ("common", "configurations"):
         valid = [k for k in d if k not in ("common", "configurations")]
         sys.exit(f"channel.py: unknown preset '{name}'; valid: "
@@ -74,7 +96,7 @@ def preset(name):
 
 
 def configuration(name):
-    d = foamio.read_dict(HERE / "presets")["configurations"]
+    d = read_presets()["configurations"]
     if name not in d:
         sys.exit(f"channel.py: unknown configuration '{name}'; valid: "
                  + " ".join(d))

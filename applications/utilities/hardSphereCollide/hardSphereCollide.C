@@ -124,6 +124,7 @@ hardSphereState readParticle(const dictionary& dict, const word& name)
 {
     using namespace hardSphereInput;
     const dictionary& pd = dict.subDict(name);
+    checkKeys(pd, {"position", "U", "omega", "d", "rho", "nPrimary"});
 
     const scalar d = getInRange(pd, "d", open(0), open(GREAT));
     const scalar rho = getInRange(pd, "rho", open(0), open(GREAT));
@@ -164,7 +165,17 @@ int main(int argc, char *argv[])
     argList::noCheckProcessorDirectories();
     argList::addArgument("dictFile");
 
-    argList args(argc, argv, false, false, false);
+    argList args(argc, argv, false, true, false);
+
+    // Exactly one argument: the dictionary file
+    if (args.size() != 2)
+    {
+        FatalErrorInFunction
+            << "hardSphereCollide needs exactly one argument, the dictionary"
+            << " file (dictFile); found " << args.size() - 1 << nl
+            << "    Usage: hardSphereCollide <dictFile>"
+            << exit(FatalError);
+    }
 
     const fileName dictFile(args.get<fileName>(1));
     IFstream is(dictFile);
@@ -175,6 +186,10 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
     const dictionary dict(is);
+
+    wordList valid(hardSphereCollisionKernel::keys(dict));
+    valid.append(wordList({"particle1", "particle2", "contactTolerance"}));
+    hardSphereInput::checkKeys(dict, valid);
 
     // Messages of the model constructors go to stderr; stdout is JSON only
     const int infoLevel = messageStream::level;

@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "vanDriestDampedDelta.H"
+#include "hardSphereInput.H"
 #include "wallFvPatch.H"
 #include "wallDistData.H"
 #include "wallPointYPlus.H"
@@ -127,6 +128,16 @@ Foam::LESModels::vanDriestDampedDelta::vanDriestDampedDelta
         )
     )
 {
+    const dictionary& coeffs = dict.subDict(type() + "Coeffs");
+    hardSphereInput::checkKeys
+    (
+        coeffs,
+        {
+            "delta", coeffs.get<word>("delta") + "Coeffs", "Aplus",
+            "calcInterval"
+        }
+    );
+
     if (Aplus_ <= 0 || calcInterval_ < 1)
     {
         FatalIOErrorInFunction(dict.subDict(type() + "Coeffs"))

@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "hardSphereCollisionKernel.H"
+#include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -40,6 +41,12 @@ Foam::hardSphereCollisionKernel::hardSphereCollisionKernel
     structure_(),
     capAgglomerateSpin_(dict.getOrDefault<bool>("capAgglomerateSpin", false))
 {
+    hardSphereInput::checkKeys
+    (
+        dict.subDict("particleCollision"),
+        {"en", "et", "muSt", "muKin"}
+    );
+
     if (dict.found("structureModel") || agglomeration_->cohesive())
     {
         structure_ = structureModel::New(dict, material_);
@@ -55,6 +62,26 @@ Foam::hardSphereCollisionKernel::hardSphereCollisionKernel
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::hardSphereCollisionKernel::keys(const dictionary& dict)
+{
+    wordList valid
+    ({
+        "material", "particleCollision", "agglomerationModel",
+        "structureModel", "capAgglomerateSpin"
+    });
+    for (const word model : {"agglomerationModel", "structureModel"})
+    {
+        word type;
+        if (dict.readIfPresent(model, type))
+        {
+            valid.append(type + "Coeffs");
+        }
+    }
+    return valid;
+}
+
+
 
 const Foam::structureModel&
 Foam::hardSphereCollisionKernel::structure() const

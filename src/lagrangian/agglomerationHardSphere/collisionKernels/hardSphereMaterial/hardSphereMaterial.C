@@ -97,6 +97,8 @@ Foam::hardSphereMaterial::hardSphereMaterial(const dictionary& dict)
     rho0_(getInRange(dict, "rho0", open(0), open(GREAT))),
     pFromSigmaY_(false)
 {
+    checkKeys(dict, {"H", "E", "nu", "sigmaY", "pMax", "delta0", "rho0"});
+
     const bool hasP = dict.found("pMax", keyType::LITERAL);
     const bool hasSigma = dict.found("sigmaY", keyType::LITERAL);
 

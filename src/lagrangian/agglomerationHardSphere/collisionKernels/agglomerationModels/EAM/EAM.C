@@ -74,6 +74,17 @@ Foam::agglomerationModels::EAM::EAM
     ),
     alletto2014_(alletto2014)
 {
+    if (coeffDict_.found("variant", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Entry 'variant' in dictionary " << coeffDict_.name()
+            << " is not an option of this library: Alletto's original"
+            << " model is agglomerationModel EAMAlletto2014" << nl
+            << "    Valid entries: (impactVelocity tangentialProjection)"
+            << exit(FatalIOError);
+    }
+    checkCoeffs({"impactVelocity", "tangentialProjection"});
+
     Info<< "    " << type << ": impactVelocity "
         << impactVelocityTypeNames[impactVelocity_]
         << ", tangentialProjection "

@@ -111,9 +111,16 @@ Foam::agglomerationModels::MAM::MAM
         )
     )
 {
+    checkCoeffs
+    ({
+        "impactVelocity", "closure", "table4Coeffs", "frictionContactTime",
+        "slidingCriterion"
+    });
+
     if (coeffDict_.found("table4Coeffs"))
     {
         const dictionary& t4 = coeffDict_.subDict("table4Coeffs");
+        hardSphereInput::checkKeys(t4, {"Cg", "ag"});
         Cg_ = getInRange(t4, "Cg", open(0), open(GREAT));
         ag_ = getInRange(t4, "ag", open(0), open(GREAT));
     }

@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "agglomerationModel.H"
+#include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -44,6 +45,17 @@ Foam::agglomerationModel::impactVelocityTypeNames
 });
 
 
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::agglomerationModel::checkCoeffs(const wordList& valid) const
+{
+    if (hasCoeffs_)
+    {
+        hardSphereInput::checkKeys(coeffDict_, valid);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::agglomerationModel::agglomerationModel
@@ -55,6 +67,7 @@ Foam::agglomerationModel::agglomerationModel
 )
 :
     coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    hasCoeffs_(dict.isDict(type + "Coeffs")),
     material_(material),
     coeffs_(coeffs)
 {}

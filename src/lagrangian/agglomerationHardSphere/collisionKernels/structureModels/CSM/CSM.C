@@ -82,6 +82,8 @@ Foam::structureModels::CSM::CSM
     fPack_(defaultPackingFractions()),
     fPackLarge_(0.52)
 {
+    checkCoeffs({"fPackLarge", "packingFractions"});
+
     if (coeffDict_.found("fPackLarge"))
     {
         fPackLarge_ = getInRange(coeffDict_, "fPackLarge", open(0), open(1));

@@ -49,7 +49,9 @@ Foam::structureModels::VSM::VSM
 )
 :
     structureModel(typeName, dict, material)
-{}
+{
+    checkCoeffs(wordList());
+}
 
 
 // ************************************************************************* //

@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureModel.H"
+#include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -33,6 +34,17 @@ namespace Foam
 {
     defineTypeNameAndDebug(structureModel, 0);
     defineRunTimeSelectionTable(structureModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::structureModel::checkCoeffs(const wordList& valid) const
+{
+    if (hasCoeffs_)
+    {
+        hardSphereInput::checkKeys(coeffDict_, valid);
+    }
 }
 
 
@@ -46,6 +58,7 @@ Foam::structureModel::structureModel
 )
 :
     coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    hasCoeffs_(dict.isDict(type + "Coeffs")),
     rho0_(material.rho0())
 {}
 

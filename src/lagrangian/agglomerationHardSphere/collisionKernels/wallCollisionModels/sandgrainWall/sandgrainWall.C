@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "sandgrainWall.H"
+#include "hardSphereInput.H"
 #include "smoothWall.H"
 #include "unitConversion.H"
 #include "addToRunTimeSelectionTable.H"
@@ -70,6 +71,16 @@ Foam::sandgrainWall::sandgrainWall(const dictionary& dict)
         coeffDict_.getOrDefault<label>("maxMultipleImpacts", 100)
     )
 {
+    hardSphereInput::checkKeys
+    (
+        coeffDict_,
+        {
+            "en", "et", "muSt", "muKin", "Rz", "CSurface",
+            "grainDiameterFactor", "sigmaGamma", "shadowMode", "maxResample",
+            "maxMultipleImpacts"
+        }
+    );
+
     if (coeffDict_.found("sigmaGamma"))
     {
         const scalar sg = coeffDict_.get<scalar>("sigmaGamma");

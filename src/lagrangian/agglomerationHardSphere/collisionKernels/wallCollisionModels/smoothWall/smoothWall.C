@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "smoothWall.H"
+#include "hardSphereInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -43,7 +44,9 @@ Foam::smoothWall::smoothWall(const dictionary& dict)
 :
     wallCollisionModel(dict, typeName),
     coeffs_(coeffDict_)
-{}
+{
+    hardSphereInput::checkKeys(coeffDict_, {"en", "et", "muSt", "muKin"});
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

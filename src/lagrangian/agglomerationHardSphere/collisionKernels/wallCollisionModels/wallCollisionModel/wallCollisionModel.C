@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wallCollisionModel.H"
+#include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -45,7 +46,9 @@ Foam::wallCollisionModel::wallCollisionModel
 )
 :
     coeffDict_(dict.subDict(type + "Coeffs"))
-{}
+{
+    hardSphereInput::checkKeys(dict, {"wallModel", type + "Coeffs"});
+}
 
 
 // ************************************************************************* //

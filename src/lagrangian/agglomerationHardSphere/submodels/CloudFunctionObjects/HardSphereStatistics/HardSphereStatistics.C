@@ -27,6 +27,7 @@ License
 
 #include "HardSphereStatistics.H"
 #include "HardSphereCloud.H"
+#include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -39,8 +40,15 @@ Foam::HardSphereStatistics<CloudType>::HardSphereStatistics
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
-    stats_(new hardSphereStatistics(owner.mesh(), owner.name(), dict))
-{}
+    stats_(nullptr)
+{
+    hardSphereInput::checkKeys
+    (
+        dict,
+        {"type", "profiles", "direction", "nBins"}
+    );
+    stats_.reset(new hardSphereStatistics(owner.mesh(), owner.name(), dict));
+}
 
 
 template<class CloudType>

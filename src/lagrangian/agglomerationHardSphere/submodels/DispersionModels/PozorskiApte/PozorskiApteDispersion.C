@@ -27,6 +27,7 @@ License
 
 #include "PozorskiApteDispersion.H"
 #include "randomStreams.H"
+#include "hardSphereInput.H"
 #include "particleKernels.H"
 #include "keyedRandom.H"
 #include "turbulenceModel.H"
@@ -65,6 +66,12 @@ Foam::PozorskiApteDispersion<CloudType>::PozorskiApteDispersion
     sigmaPtr_(nullptr),
     deltaPtr_(nullptr)
 {
+    hardSphereInput::checkKeys
+    (
+        this->coeffDict(),
+        {"kSgsSource", "Ck", "CT", "betaC", "seed", "wallReflection"}
+    );
+
     if (Ck_ <= 0 || CT_ <= 0 || betaC_ < 0)
     {
         FatalIOErrorInFunction(this->coeffDict())

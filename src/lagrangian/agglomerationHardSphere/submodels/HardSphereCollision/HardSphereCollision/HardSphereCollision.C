@@ -27,6 +27,7 @@ License
 
 #include "HardSphereCollision.H"
 #include "HashSet.H"
+#include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -159,6 +160,17 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     schedule_(),
     candidates_()
 {
+    // Every entry of hardSphereCoeffs is read by this model, the wall
+    // interaction or the kernel
+    wordList valid
+    ({
+        "overlapTreatment", "encounterMemory", "encounterRelease",
+        "collisionResponse", "interactionDistance", "pairSearch"
+    });
+    valid.append(hardSphereWallInteraction::keys());
+    valid.append(hardSphereCollisionKernel::keys(this->coeffDict()));
+    hardSphereInput::checkKeys(this->coeffDict(), valid);
+
     const word search
     (
         this->coeffDict().template getOrDefault<word>

@@ -27,6 +27,7 @@ License
 
 #include "RotationLiftForce.H"
 #include "particleKernels.H"
+#include "hardSphereInput.H"
 #include "fvcCurl.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -56,6 +57,8 @@ Foam::RotationLiftForce<CloudType>::RotationLiftForce
     curlUcInterpPtr_(nullptr),
     nOutOfRange_(0)
 {
+    hardSphereInput::checkKeys(this->coeffs(), {"model", "U"});
+
     Info<< "    rotationLift: model " << liftModelNames[model_] << endl;
 }
 
