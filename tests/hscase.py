@@ -243,13 +243,10 @@ def run_case(case, parallel=0, check=True):
     """blockMesh, then the solver (serial, or decomposed on N ranks)."""
     run([foam_bin("blockMesh")], case, "log.blockMesh")
     if parallel:
-        run([foam_bin("decomposePar"), "-force"], case, "log.decomposePar")
         # decomposePar writes barycentric coordinates but copies the
-        # uniform cloudProperties that announce the legacy positions file
-        for f in Path(case).glob("processor*/0/uniform/lagrangian/"
-                                 "kinematicCloud/cloudProperties"):
-            f.write_text(f.read_text().replace("geometry positions;",
-                                               "geometry coordinates;"))
+        # uniform cloudProperties that announce the legacy positions file:
+        # the cloud reads whichever form is there
+        run([foam_bin("decomposePar"), "-force"], case, "log.decomposePar")
         res = run(["mpirun", "-np", str(parallel), "--oversubscribe",
                    foam_bin("aggloPimpleFoam"), "-parallel"], case,
                   "log.aggloPimpleFoam", check=check)

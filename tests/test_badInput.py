@@ -15,7 +15,7 @@ import sys
 
 import pytest
 
-from conftest import ROOT, foam_bin
+from conftest import ROOT, foam_bin, run
 from hscase import box_case, run_case
 
 L = 1e-4
@@ -267,3 +267,124 @@ def test_presets_reject_unknown_entries(tmp_path, foam_env, tutorial,
                          capture_output=True, text=True)
     assert bad.returncode != 0
     assert "nParticels" in bad.stderr + bad.stdout
+
+
+# ------------------------------------------------- particle fields on read
+
+def field_text(case_dir, name):
+    return (case_dir / "0/lagrangian/kinematicCloud" / name).read_text()
+
+
+def set_field(case_dir, name, body):
+    """Replace the list of a lagrangian field file of the box case."""
+    f = case_dir / "0/lagrangian/kinematicCloud" / name
+    text = f.read_text()
+    head = text[:text.index("}") + 1]
+    f.write_text(head + "\n" + body + "\n")
+
+
+def binary_scalar_field(case_dir, name, values):
+    """Write a binary scalarField (OpenFOAM's layout: N (raw doubles))."""
+    import struct
+    f = case_dir / "0/lagrangian/kinematicCloud" / name
+    head = ("FoamFile { version 2.0; format binary; class scalarField;"
+            f" location \"0/lagrangian/kinematicCloud\"; object {name}; }}\n")
+    f.write_bytes(head.encode() + f"{len(values)}\n(".encode()
+                  + struct.pack(f"<{len(values)}d", *values) + b")\n")
+
+
+FIELD_CASES = {
+    "dNegative": ("d", "2(1.2e-05 -1.2e-05)", "d"),
+    "dZero": ("d", "2(1.2e-05 0)", "d"),
+    "rhoZero": ("rho", "2(2200 0)", "rho"),
+    "rhoNegative": ("rho", "2(-2200 2200)", "rho"),
+    "nPrimaryZero": ("nPrimary", "2(1 0)", "nPrimary"),
+    "nPrimaryEmpty": ("nPrimary", "0()", "nPrimary"),
+    "omegaShort": ("omega", "1((0 0 0))", "omega"),
+    "positionsEmpty": ("positions", "0()", "positions"),
+}
+
+
+@pytest.mark.parametrize("name", list(FIELD_CASES))
+def test_bad_particle_field(case_dir, foam_env, name):
+    """Invalid particle fields stop the run when read, naming the field,
+    the particle and the value (d < 0 used to run to the end with mass 0;
+    d = 0 or rho = 0 crashed later without naming a field; an empty
+    nPrimary list ran with nPrimary = 1, an empty positions list with no
+    particles)."""
+    field, body, word = FIELD_CASES[name]
+    edited_case(case_dir, EAM, EAM)
+    set_field(case_dir, field, body)
+    assert_fatal_naming(run_case(case_dir, check=False), word)
+
+
+def test_nan_in_binary_field(case_dir, foam_env):
+    edited_case(case_dir, EAM, EAM)
+    binary_scalar_field(case_dir, "d", [12e-6, float("nan")])
+    res = run_case(case_dir, check=False)
+    assert_fatal_naming(res, "particle 1 has d = nan")
+
+
+# ------------------------------------------------ position forms, parallel
+
+def cloud_totals(case_dir, t):
+    from hscase import cloud_state, stats
+    st = cloud_state(case_dir, t)
+    d = [float(x) for x in st["d"]]
+    rho = [float(x) for x in st["rho"]]
+    mass = sum(r * 3.141592653589793 / 6 * x**3 for x, r in zip(d, rho))
+    return len(d), sum(int(n) for n in st["nPrimary"]), mass, stats(case_dir)
+
+
+def gas(case_dir):
+    import numpy as np
+    rng = np.random.default_rng(5)
+    Lb, xs = 2e-4, []
+    while len(xs) < 300:
+        x = rng.uniform(8e-6, Lb - 8e-6, 3)
+        if all(np.linalg.norm(x - y) > 14.4e-6 for y in xs):
+            xs.append(x)
+    U = rng.normal(0, 1.5e-3, (len(xs), 3))
+    parts = [dict(x=tuple(x), U=tuple(u), id=i) for i, (x, u)
+             in enumerate(zip(xs, U))]
+    box_case(case_dir, L=(Lb,) * 3, n=(6, 6, 6), particles=parts,
+             kinds=("cyclic", "wall", "cyclic"), dt=1e-4, end_time=4e-3,
+             agglomeration="EAM", decompose=(2, 1, 1))
+    return len(parts)
+
+
+def test_positions_file_without_uniform_properties(case_dir, foam_env):
+    """A hand-written positions file without the uniform cloudProperties
+    (which says 'geometry positions') used to give 0 particles."""
+    n = gas(case_dir)
+    shutil.rmtree(case_dir / "0/uniform")
+    run_case(case_dir)
+    assert cloud_totals(case_dir, "0.004")[1] == n
+
+
+def test_parallel_round_trip_loses_nothing(case_dir, foam_env):
+    """serial -> decomposePar -> 2 ranks -> reconstructPar -> serial with a
+    hand-written cloud in the positions form: particles, primaries, mass
+    and counters as in the serial run (decomposePar writes coordinates but
+    keeps 'geometry positions': 0 particles on both ranks before)."""
+    from hscase import last_time
+    serial, mpi = case_dir / "serial", case_dir / "mpi"
+    n = gas(serial)
+    gas(mpi)
+    run_case(serial)
+    run_case(mpi, parallel=2)
+    assert last_time(mpi) == last_time(serial) == "0.004"
+    ns, ps, ms, rows_s = cloud_totals(serial, "0.004")
+    nm, pm, mm, rows_m = cloud_totals(mpi, "0.004")
+    assert ps == pm == n
+    assert rows_s[-1]["nAgg"] > 0 and rows_s[-1]["nCol"] > 5
+    assert nm == ns == n - int(rows_s[-1]["nAgg"])
+    assert mm == pytest.approx(ms, rel=1e-12)
+    keys = ("nParticles", "nPrimaries", "nCol", "nAgg", "nWall")
+    assert [[r[k] for k in keys] for r in rows_m] == \
+        [[r[k] for k in keys] for r in rows_s]
+    # and back: the reconstructed cloud restarts serially with everything
+    run([foam_bin("foamDictionary"), "-entry", "endTime", "-set", "0.008",
+         "system/controlDict"], mpi, "log.foamDictionary")
+    run([foam_bin("aggloPimpleFoam")], mpi, "log.aggloPimpleFoam.serial")
+    assert cloud_totals(mpi, "0.008")[1] == n

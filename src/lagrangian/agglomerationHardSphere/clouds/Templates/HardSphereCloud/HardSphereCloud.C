@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "HardSphereCloud.H"
+#include "IOPosition.H"
 #include "clockTime.H"
 #include "fvcCurl.H"
 
@@ -72,6 +73,39 @@ void Foam::HardSphereCloud<CloudType>::setModels()
 }
 
 
+template<class CloudType>
+void Foam::HardSphereCloud<CloudType>::readOtherPositionForm()
+{
+    if (this->size())
+    {
+        return;
+    }
+
+    for
+    (
+        const cloud::geometryType geom
+      : {cloud::geometryType::COORDINATES, cloud::geometryType::POSITIONS}
+    )
+    {
+        IOPosition<Cloud<parcelType>> ioP(*this, geom);
+        if (!ioP.headerOk())
+        {
+            continue;
+        }
+        Istream& is = ioP.readStream("", true);
+        ioP.readData(is, *this);
+        ioP.close();
+
+        if (this->size())
+        {
+            Pout<< "    Cloud " << this->name() << ": read " << this->size()
+                << " particles from " << ioP.objectPath() << endl;
+            break;
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -104,6 +138,7 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
 
         if (readFields)
         {
+            readOtherPositionForm();
             parcelType::readFields(*this);
             this->deleteLostParticles();
         }

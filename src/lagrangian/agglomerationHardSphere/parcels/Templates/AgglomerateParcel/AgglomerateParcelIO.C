@@ -108,27 +108,68 @@ namespace Foam
 namespace agglomerateParcelIO
 {
 
-//- Read an optional parcel field; an absent file gives an empty field
+//- Fatal error unless a field read from file has one value per particle
+template<class Type, class CloudType>
+void checkSize(const CloudType& c, const IOField<Type>& fld)
+{
+    if (fld.size() != c.size())
+    {
+        FatalErrorInFunction
+            << "Cloud " << c.name() << ": the field " << fld.objectPath()
+            << " has " << fld.size() << " values for " << c.size()
+            << " particles (one value per particle is needed)"
+            << exit(FatalError);
+    }
+}
+
+
+//- Read an optional parcel field; only an absent file gives an empty
+//  field (a file of the wrong length is fatal)
 template<class Type, class CloudType>
 tmp<IOField<Type>> readOptional(CloudType& c, const word& name)
 {
     const bool valid = c.size();
+    IOobject io(c.fieldIOobject(name, IOobject::READ_IF_PRESENT));
+    const bool present = valid && io.typeHeaderOk<IOField<Type>>(true);
 
-    tmp<IOField<Type>> tfld
-    (
-        new IOField<Type>
-        (
-            c.fieldIOobject(name, IOobject::READ_IF_PRESENT),
-            valid
-        )
-    );
+    tmp<IOField<Type>> tfld(new IOField<Type>(io, valid));
 
-    if (tfld().size())
+    if (present)
     {
-        c.checkFieldIOobject(c, tfld());
+        checkSize(c, tfld());
     }
 
     return tfld;
+}
+
+
+//- Fatal error naming the field, the particle and the value unless ok
+template<class Type, class CloudType>
+void checkValue
+(
+    const CloudType& c,
+    const bool ok,
+    const word& field,
+    const label i,
+    const Type& value,
+    const char* valid
+)
+{
+    if (!ok)
+    {
+        FatalErrorInFunction
+            << "Cloud " << c.name() << ": particle " << i << " has "
+            << field << " = " << value << " in "
+            << c.time().timeName()/cloud::prefix/c.name()/field
+            << "; valid: " << valid << exit(FatalError);
+    }
+}
+
+
+inline bool finite(const vector& v)
+{
+    return
+        std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
 } // End namespace agglomerateParcelIO
@@ -154,6 +195,26 @@ void Foam::AgglomerateParcel<ParcelType>::readFields(CloudType& c)
     tmp<IOField<scalar>> lastTime =
         readOptional<scalar>(c, "lastContactTime");
 
+    // No particle read, but particle fields on file: a position file (or
+    // its list) is missing or empty
+    if (c.size() == 0)
+    {
+        IOobject io(c.fieldIOobject("d", IOobject::READ_IF_PRESENT));
+        if (io.typeHeaderOk<IOField<scalar>>(true))
+        {
+            const IOField<scalar> d(io);
+            if (d.size())
+            {
+                FatalErrorInFunction
+                    << "Cloud " << c.name() << ": " << d.objectPath()
+                    << " lists " << d.size() << " particles, but no"
+                    << " particle position was read (the coordinates or"
+                    << " positions file is missing or empty)"
+                    << exit(FatalError);
+            }
+        }
+    }
+
     label i = 0;
     for (AgglomerateParcel<ParcelType>& p : c)
     {
@@ -165,14 +226,22 @@ void Foam::AgglomerateParcel<ParcelType>::readFields(CloudType& c)
         p.position0_ = p.position();
         p.status_ = 0;
 
-        if (p.nPrimary_ < 1)
-        {
-            FatalErrorInFunction
-                << "Parcel " << i << " of cloud " << c.name()
-                << " has nPrimary = " << p.nPrimary_
-                << "; it must be at least 1"
-                << exit(FatalError);
-        }
+        // Particle fields, checked when read
+        using agglomerateParcelIO::checkValue;
+        using agglomerateParcelIO::finite;
+        checkValue(c, p.nPrimary_ >= 1, "nPrimary", i, p.nPrimary_, ">= 1");
+        checkValue
+        (
+            c, std::isfinite(p.d()) && p.d() > 0, "d", i, p.d(),
+            "finite, > 0"
+        );
+        checkValue
+        (
+            c, std::isfinite(p.rho()) && p.rho() > 0, "rho", i, p.rho(),
+            "finite, > 0"
+        );
+        checkValue(c, finite(p.U()), "U", i, p.U(), "finite");
+        checkValue(c, finite(p.omega_), "omega", i, p.omega_, "finite");
 
         ++i;
     }
