@@ -27,6 +27,7 @@ License
 
 #include "HardSphereCollision.H"
 #include "HashSet.H"
+#include "cyclicPolyPatch.H"
 #include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -158,8 +159,19 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     ilSearch_(nullptr),
     bfSearch_(nullptr),
     schedule_(),
-    candidates_()
+    candidates_(),
+    minPeriod_(GREAT)
 {
+    for (const polyPatch& pp : owner.mesh().boundaryMesh())
+    {
+        const cyclicPolyPatch* cycPtr = isA<cyclicPolyPatch>(pp);
+        if (cycPtr && cycPtr->separated())
+        {
+            minPeriod_ = min(minPeriod_, mag(cycPtr->separation()[0]));
+        }
+    }
+    reduce(minPeriod_, minOp<scalar>());
+
     // Every entry of hardSphereCoeffs is read by this model, the wall
     // interaction or the kernel
     wordList valid
@@ -281,6 +293,18 @@ void Foam::HardSphereCollision<CloudType>::collide()
     const bool release = encounterRelease_ >= 0;
     const scalar distance =
         max(dMax + 2*dxMax, (release ? 1 + encounterRelease_ : 1)*dMax);
+
+    if (distance > 0.5*minPeriod_)
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloud.name() << ": the collision search distance"
+            << " d_max + 2 max|dx| = " << distance << " m (d_max " << dMax
+            << " m, largest displacement in the step " << dxMax << " m)"
+            << " exceeds half the shortest periodic length, "
+            << 0.5*minPeriod_ << " m: a partner could meet a particle"
+            << " through more than one periodic image. Reduce the time"
+            << " step (or enlarge the periodic domain)" << exit(FatalError);
+    }
 
 
     // Candidate events
