@@ -400,3 +400,121 @@ def test_displacement_beyond_half_a_period(case_dir, foam_env):
              kinds=("cyclic", "wall", "wall"))
     res = run_case(case_dir, check=False)
     assert_fatal_naming(res, "half the shortest periodic length")
+
+
+def test_vtkcloud_writes_every_parcel_field(case_dir, foam_env):
+    """The vtkCloud function object writes lastPartnerProc, lastPartnerId
+    and lastContactTime (the README promises it; only omega and nPrimary
+    were registered): after the head-on rebound the partners name each
+    other."""
+    import re
+    parts = [dict(x=(0.4 * L, 0.5 * L, 0.5 * L), U=(0.1, 0, 0), id=0),
+             dict(x=(0.6 * L, 0.5 * L, 0.5 * L), U=(-0.1, 0, 0), id=1)]
+    box_case(case_dir, L=(L, L, L), particles=parts, dt=1e-5, end_time=1e-4)
+    # keep the last partner after the pair has separated
+    f = case_dir / "constant" / "kinematicCloudProperties"
+    f.write_text(f.read_text().replace(
+        "agglomerationModel none;",
+        "agglomerationModel none; encounterRelease none;", 1))
+    cd = case_dir / "system" / "controlDict"
+    cd.write_text(cd.read_text() + """
+functions
+{
+    cloudVtk
+    {
+        type            vtkCloud;
+        libs            ("liblagrangianFunctionObjects.so");
+        cloud           kinematicCloud;
+        fields          (nPrimary lastPartnerProc lastPartnerId
+                         lastContactTime);
+        format          ascii;
+        writeControl    writeTime;
+    }
+}
+""")
+    run_case(case_dir)
+    vtps = sorted((case_dir / "postProcessing" / "cloudVtk").rglob("*.vtp"))
+    assert vtps
+    text = vtps[-1].read_text()
+    for name in ("nPrimary", "lastPartnerProc", "lastPartnerId",
+                 "lastContactTime"):
+        assert f"Name='{name}'" in text, name
+    ids = re.search(r"Name='lastPartnerId'[^>]*>([^<]*)<", text).group(1)
+    assert [int(x) for x in ids.split()] == [1, 0]
+
+
+def test_unhandled_wall_is_fatal(case_dir, foam_env):
+    """collisionModel none with patchInteractionModel none: a particle that
+    reached a wall looped forever in tracking; now the set-up is refused,
+    naming both entries."""
+    box_case(case_dir, L=(L, L, L), particles=PAIR, dt=1e-5, end_time=2e-5,
+             hard_sphere="none")
+    res = run_case(case_dir, check=False)
+    assert_fatal_naming(res, "patchInteractionModel")
+    assert "collisionModel" in res.stdout.split("FOAM FATAL", 1)[1]
+
+
+# ------------------------------------------------------------ fault tests
+
+def test_fast_pair_on_two_ranks_one_contact_time(case_dir, foam_env):
+    """A head-on pair crossing the processor plane within the step (six
+    cells per step each): both partners store the same contact time, the
+    one of the serial run; the rebound velocities are the serial ones."""
+    Lx = 1e-3
+    parts = [dict(x=(0.2 * Lx, 0.5e-4, 0.5e-4), U=(6.0, 0, 0), id=0),
+             dict(x=(0.8 * Lx, 0.5e-4, 0.5e-4), U=(-6.0, 0, 0), id=1)]
+    out = {}
+    for ranks in (0, 2):
+        c = case_dir / f"np{ranks}"
+        box_case(c, L=(Lx, 1e-4, 1e-4), n=(10, 1, 1), particles=parts,
+                 dt=1e-4, end_time=1e-4, decompose=(2, 1, 1),
+                 kinds=("wall", "wall", "wall"))
+        run_case(c, parallel=ranks)
+        from hscase import cloud_state, stats
+        assert stats(c)[-1]["nCol"] == 1
+        out[ranks] = cloud_state(c, "0.0001")
+    serial, mpi = out[0], out[2]
+    tc = mpi["lastContactTime"]
+    assert tc[0] == tc[1]
+    assert tc[0] == pytest.approx(serial["lastContactTime"][0], rel=1e-12)
+    order = lambda st: [u for _, u in sorted(zip(st["origId"], st["U"]))]
+    for us, um in zip(order(serial), order(mpi)):
+        assert um == pytest.approx(us, rel=1e-12)
+
+
+def test_restart_after_a_cut_off_write(case_dir, foam_env):
+    """A kill -9 during a write leaves a half-written last time folder that
+    stops OpenFOAM's restart (it reads the latest time). The tutorials'
+    resume (aggloTools.foamio.set_aside_incomplete_times, called by both
+    Allruns before continuing) sets it aside and says so; the run then
+    continues from the previous write and ends where an uninterrupted run
+    ends."""
+    import re
+    sys.path.insert(0, str(ROOT / "tools"))     # until aggloTools installs
+    from aggloTools import foamio
+    from hscase import stats
+    n = gas(case_dir)
+    run([foam_bin("foamDictionary"), "-entry", "writeInterval", "-set",
+         "10", "system/controlDict"], case_dir, "log.foamDictionary")
+    run_case(case_dir)
+    full = stats(case_dir)[-1]
+    # cut off the last write: truncate one particle field, then restart
+    last = case_dir / "0.004"
+    assert (last / "uniform" / "time").is_file()
+    f = last / "lagrangian" / "kinematicCloud" / "U"
+    f.write_text(f.read_text()[: len(f.read_text()) // 2])
+    assert foamio.incomplete_time(case_dir) == last
+    plain = subprocess.run([foam_bin("aggloPimpleFoam")], cwd=case_dir,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           text=True)
+    assert plain.returncode != 0           # OpenFOAM's own behaviour
+    moved = foamio.set_aside_incomplete_times(case_dir)
+    assert [m.name for m in moved] == ["incomplete.0.004"]
+    assert foamio.incomplete_time(case_dir) is None
+    run([foam_bin("aggloPimpleFoam")], case_dir, "log.aggloPimpleFoam.2")
+    log = (case_dir / "log.aggloPimpleFoam.2").read_text()
+    assert re.search(r"Starting time loop", log)
+    assert cloud_totals(case_dir, "0.004")[1] == n
+    again = stats(case_dir)[-1]
+    assert again.pop("Time") == pytest.approx(full.pop("Time"), rel=1e-12)
+    assert again == full

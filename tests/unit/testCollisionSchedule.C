@@ -68,9 +68,10 @@ std::set<pairKey> acceptedPairs
 {
     List<collisionSchedule::event> all(events);
     labelList accepted;
+    scalarList acceptedS;
     collisionSchedule::select
     (
-        all, onePerParticle, 0, accepted, nSuppressed, nSeparating
+        all, onePerParticle, 0, accepted, acceptedS, nSuppressed, nSeparating
     );
     std::set<pairKey> pairs;
     for (const label k : accepted)
@@ -131,14 +132,20 @@ TEST(CollisionSchedule, PairSeenFromTwoRanks)
     {
         List<collisionSchedule::event> copy(all);
         labelList accepted;
+        scalarList acceptedS;
         label nSup = -1, nSep = -1;
-        collisionSchedule::select(copy, true, rank, accepted, nSup, nSep);
+        collisionSchedule::select
+        (
+            copy, true, rank, accepted, acceptedS, nSup, nSep
+        );
 
         // The pair (0,5)-(1,2) is the earliest (0.30); (0,5)-(0,9) loses
         EXPECT_EQ(nSup, 1);
         EXPECT_EQ(nSep, 0);
         ASSERT_EQ(accepted.size(), 1);
         EXPECT_EQ(accepted[0], rank == 0 ? 3 : 0);
+        // Both ranks apply the event's contact time, the earliest copy's
+        EXPECT_EQ(acceptedS[0], 0.30);
     }
 }
 
@@ -207,11 +214,15 @@ TEST(CollisionSchedule, DuplicatesOnOneRank)
         makeEvent(0.2, id(0, 1), id(0, 4), 0, 1)
     });
     labelList accepted;
+    scalarList acceptedS;
     label nSup = -1, nSep = -1;
-    collisionSchedule::select(evs, true, 0, accepted, nSup, nSep);
+    collisionSchedule::select(evs, true, 0, accepted, acceptedS, nSup, nSep);
     ASSERT_EQ(accepted.size(), 2);
     EXPECT_EQ(accepted[0], 0);
     EXPECT_EQ(accepted[1], 1);
+    // Both copies at the contact time of the earliest
+    EXPECT_EQ(acceptedS[0], 0.2);
+    EXPECT_EQ(acceptedS[1], 0.2);
     EXPECT_EQ(nSup, 0);
 }
 

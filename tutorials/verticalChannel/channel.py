@@ -15,6 +15,8 @@
                                   the seeded pairs of the smoke preset
                                   (doc/cases.md A.11) at the latest time
     channel.py progress CASE      stage, simulated time and ETA of a run
+    channel.py settle CASE        set aside a last time folder whose write
+                                  was cut off (before a restart)
     channel.py post PRESET        results/PRESET: summary.json,
                                   regression.txt, plots (exit 1 on a FAIL)
 
@@ -507,6 +509,8 @@ def main(argv):
         seed_pairs(argv[2], argv[3:])
     elif cmd == "progress":
         print(progress(argv[2]))
+    elif cmd == "settle":
+        foamio.set_aside_incomplete_times(argv[2])
     elif cmd == "post":
         import channelPost
         return channelPost.post(argv[2])

@@ -57,6 +57,7 @@ void Foam::collisionSchedule::select
     const bool onePerParticle,
     const label rank,
     labelList& accepted,
+    scalarList& acceptedS,
     label& nSuppressed,
     label& nSeparating
 )
@@ -97,7 +98,7 @@ void Foam::collisionSchedule::select
     // Greedy, at most one event per particle
     typedef HashSet<globalId, globalId::Hash<>> idSet;
     idSet taken(2*nGroups + 1);
-    DynamicList<label> mine;
+    DynamicList<labelPair> mine;    // (candidate index, group start)
 
     for (const label g : order)
     {
@@ -120,13 +121,24 @@ void Foam::collisionSchedule::select
         {
             if (all[k].rank == rank && !all[k].separating)
             {
-                mine.append(all[k].index);
+                mine.append(labelPair(all[k].index, groupStart[g]));
             }
         }
     }
 
-    std::sort(mine.begin(), mine.end());
-    accepted.transfer(mine);
+    std::sort
+    (
+        mine.begin(),
+        mine.end(),
+        [](const labelPair& a, const labelPair& b) { return a[0] < b[0]; }
+    );
+    accepted.setSize(mine.size());
+    acceptedS.setSize(mine.size());
+    forAll(mine, m)
+    {
+        accepted[m] = mine[m][0];
+        acceptedS[m] = all[mine[m][1]].s;
+    }
 }
 
 
@@ -136,6 +148,7 @@ Foam::collisionSchedule::collisionSchedule()
 :
     candidates_(),
     accepted_(),
+    acceptedS_(),
     nSuppressed_(0),
     nSeparating_(0)
 {}
@@ -147,6 +160,7 @@ void Foam::collisionSchedule::clear()
 {
     candidates_.clear();
     accepted_.clear();
+    acceptedS_.clear();
     nSuppressed_ = 0;
     nSeparating_ = 0;
 }
@@ -207,6 +221,7 @@ void Foam::collisionSchedule::select(const bool onePerParticle)
         onePerParticle,
         Pstream::myProcNo(),
         accepted_,
+        acceptedS_,
         nSuppressed_,
         nSeparating_
     );

@@ -27,6 +27,7 @@ License
 
 #include "HardSphereCloud.H"
 #include "IOPosition.H"
+#include "wallPolyPatch.H"
 #include "clockTime.H"
 #include "fvcCurl.H"
 
@@ -70,6 +71,29 @@ void Foam::HardSphereCloud<CloudType>::setModels()
             *this
         ).ptr()
     );
+
+    // A particle reaching a wall that nothing handles would be tracked
+    // into it forever
+    if
+    (
+        !collisionModel_->active()
+     && this->patchInteraction().type() == "none"
+    )
+    {
+        for (const polyPatch& pp : this->mesh().boundaryMesh())
+        {
+            if (isA<wallPolyPatch>(pp))
+            {
+                FatalIOErrorInFunction(this->subModelProperties())
+                    << "Cloud " << this->name() << ": the wall patch "
+                    << pp.name() << " is handled by neither the collision"
+                    << " model (collisionModel none) nor the patch"
+                    << " interaction (patchInteractionModel none): select"
+                    << " collisionModel hardSphere or a"
+                    << " patchInteractionModel" << exit(FatalIOError);
+            }
+        }
+    }
 }
 
 

@@ -337,12 +337,20 @@ void Foam::AgglomerateParcel<ParcelType>::readObjects
 
     const auto& omega = cloud::lookupIOField<vector>("omega", obr);
     const auto& nPrimary = cloud::lookupIOField<label>("nPrimary", obr);
+    const auto& lastProc =
+        cloud::lookupIOField<label>("lastPartnerProc", obr);
+    const auto& lastId = cloud::lookupIOField<label>("lastPartnerId", obr);
+    const auto& lastTime =
+        cloud::lookupIOField<scalar>("lastContactTime", obr);
 
     label i = 0;
     for (AgglomerateParcel<ParcelType>& p : c)
     {
         p.omega_ = omega[i];
         p.nPrimary_ = nPrimary[i];
+        p.lastPartnerProc_ = lastProc[i];
+        p.lastPartnerId_ = lastId[i];
+        p.lastContactTime_ = lastTime[i];
 
         ++i;
     }
@@ -363,12 +371,19 @@ void Foam::AgglomerateParcel<ParcelType>::writeObjects
 
     auto& omega = cloud::createIOField<vector>("omega", np, obr);
     auto& nPrimary = cloud::createIOField<label>("nPrimary", np, obr);
+    auto& lastProc = cloud::createIOField<label>("lastPartnerProc", np, obr);
+    auto& lastId = cloud::createIOField<label>("lastPartnerId", np, obr);
+    auto& lastTime =
+        cloud::createIOField<scalar>("lastContactTime", np, obr);
 
     label i = 0;
     for (const AgglomerateParcel<ParcelType>& p : c)
     {
         omega[i] = p.omega_;
         nPrimary[i] = p.nPrimary_;
+        lastProc[i] = p.lastPartnerProc_;
+        lastId[i] = p.lastPartnerId_;
+        lastTime[i] = p.lastContactTime_;
 
         ++i;
     }

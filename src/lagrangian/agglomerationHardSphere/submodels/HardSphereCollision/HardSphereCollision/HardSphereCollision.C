@@ -301,9 +301,10 @@ void Foam::HardSphereCollision<CloudType>::collide()
             << " d_max + 2 max|dx| = " << distance << " m (d_max " << dMax
             << " m, largest displacement in the step " << dxMax << " m)"
             << " exceeds half the shortest periodic length, "
-            << 0.5*minPeriod_ << " m: a partner could meet a particle"
-            << " through more than one periodic image. Reduce the time"
-            << " step (or enlarge the periodic domain)" << exit(FatalError);
+            << 0.5*minPeriod_ << " m: the pair search misses partners"
+            << " through a second periodic image beyond it (found by the"
+            << " O(N^2) oracle). Reduce the time step (or enlarge the"
+            << " periodic domain)" << exit(FatalError);
     }
 
 
@@ -358,7 +359,6 @@ void Foam::HardSphereCollision<CloudType>::collide()
         const collisionSchedule::globalId idJ({pj.origProc(), pj.origId()});
 
         candidate c;
-        c.s = pc.s;
         c.i = i;
         c.j = j;
         c.iLow = collisionSchedule::lessId(idI, idJ);
@@ -395,7 +395,7 @@ void Foam::HardSphereCollision<CloudType>::collide()
             c.category = hardSphereStep::FIRST;
         }
 
-        schedule_.append(c.s, idI, idJ, separating);
+        schedule_.append(pc.s, idI, idJ, separating);
         candidates_.append(c);
     };
 

@@ -75,9 +75,13 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
     // periodic image of the same pair
     HashSet<pairKey, pairKey::Hash<>> ghostDone;
 
-    for (const label k : schedule_.accepted())
+    forAll(schedule_.accepted(), a)
     {
-        const candidate& c = candidates_[k];
+        const candidate& c = candidates_[schedule_.accepted()[a]];
+
+        // Every copy of the pair (from the other processor, through another
+        // image) at the event's contact time: one geometry for both
+        const scalar s = schedule_.acceptedS()[a];
 
         parcelType& pi = *parcels[c.i];
         parcelType* pjRealPtr = c.j < n ? parcels[c.j] : nullptr;
@@ -88,7 +92,7 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
 
         const globalId idI({pi.origProc(), pi.origId()});
         const globalId idJ({pj.origProc(), pj.origId()});
-        const scalar tc = tStart + c.s*dt;
+        const scalar tc = tStart + s*dt;
 
         if (ghost)
         {
@@ -103,9 +107,9 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
             {
                 const point xci
                 (
-                    pi.position0() + c.s*(x1[c.i] - pi.position0())
+                    pi.position0() + s*(x1[c.i] - pi.position0())
                 );
-                const point xcj(pj.position0() + c.s*(xj1 - pj.position0()));
+                const point xcj(pj.position0() + s*(xj1 - pj.position0()));
                 step.count
                 (
                     c.category, contactPoint(xci, pi.d(), xcj), nullptr
@@ -132,8 +136,8 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
 
         const vector dxi(x1[c.i] - pi.position0());
         const vector dxj(xj1 - pj.position0());
-        const point xic(pi.position0() + c.s*dxi);
-        const point xjc(pj.position0() + c.s*dxj);
+        const point xic(pi.position0() + s*dxi);
+        const point xjc(pj.position0() + s*dxj);
 
         const hardSphereState si
         (
@@ -210,7 +214,7 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
         point xjNew(xj1);
         if (separate)
         {
-            const scalar rest = (1 - c.s)*dt;
+            const scalar rest = (1 - s)*dt;
             xiNew = xic + rest*newI.U;
             xjNew = xjc + rest*newJ.U;
 
@@ -230,13 +234,13 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
         auto rebound = [&]
         (
             parcelType& p,
-            const hardSphereState& s,
+            const hardSphereState& st,
             const globalId& partner,
             const point& xNew
         )
         {
-            p.U() = s.U;
-            p.omega() = s.omega;
+            p.U() = st.U;
+            p.omega() = st.omega;
             p.lastPartnerProc() = partner[0];
             p.lastPartnerId() = partner[1];
             p.lastContactTime() = tc;
