@@ -518,3 +518,41 @@ def test_restart_after_a_cut_off_write(case_dir, foam_env):
     again = stats(case_dir)[-1]
     assert again.pop("Time") == pytest.approx(full.pop("Time"), rel=1e-12)
     assert again == full
+
+
+def test_agglomerate_at_wall_across_processor_plane(case_dir, foam_env):
+    """An agglomerate formed next to a wall, whose centre of mass lies on
+    the other processor than its lower-id partner, overlaps the wall and is
+    moved out to one radius: at the same place on 2 ranks as in serial (it
+    ended 20 nm off on 2 ranks: the wall faces were looked up around the
+    partner, on the partner's processor)."""
+    Lx = 4e-4
+    D2 = 24e-6
+    y1, y2 = 6.5e-6, 12.5e-6
+    # particle 1 (the heavier, higher id) is across the plane x = Lx/2
+    R = 0.5 * (12e-6 + D2)
+    dx = ((R + 2e-9) ** 2 - (y2 - y1) ** 2) ** 0.5
+    parts = [dict(x=(0.5 * Lx - 15e-6, y1, 5e-5), U=(1.5e-4, 0, 0), id=0),
+             dict(x=(0.5 * Lx - 15e-6 + dx, y2, 5e-5), U=(-1.5e-4, 0, 0),
+                  d=D2, nPrimary=8, id=1)]
+    out = {}
+    for ranks in (0, 2):
+        c = case_dir / f"np{ranks}"
+        box_case(c, L=(Lx, 1e-4, 1e-4), n=(8, 2, 2), particles=parts,
+                 dt=1e-5, end_time=1e-5, decompose=(2, 1, 1),
+                 agglomeration="MAM", kinds=("wall", "wall", "wall"))
+        run_case(c, parallel=ranks)
+        from hscase import cloud_state, stats
+        assert stats(c)[-1]["nAgg"] == 1
+        out[ranks] = read_positions_of(c, "1e-05")
+    assert len(out[0]) == len(out[2]) == 1
+    assert out[2][0] == pytest.approx(out[0][0], rel=0, abs=1e-12)
+
+
+def read_positions_of(case, t):
+    """Cartesian positions via foamToVTK-free reading: the positions file
+    written next to coordinates (ASCII)."""
+    import re
+    f = case / t / "lagrangian" / "kinematicCloud" / "positions"
+    return [tuple(float(v) for v in m.split()) for m in
+            re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", f.read_text())]

@@ -273,6 +273,12 @@ void Foam::HardSphereCloud<CloudType>::motion
         {
             td.part() = parcelType::trackingData::tpRelocate;
             CloudType::move(cloud, td, this->db().time().deltaTValue());
+
+            // Agglomerates formed at a wall: out of it from their own place
+            if (collisionModel_->afterRelocation())
+            {
+                CloudType::move(cloud, td, this->db().time().deltaTValue());
+            }
             td.part() = parcelType::trackingData::tpLinearTrack;
         }
 

@@ -184,6 +184,7 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
                 p.position0() = xAg;
                 p.setStatus(parcelType::COLLIDED);
                 p.setStatus(parcelType::RELOCATE);
+                p.setStatus(parcelType::FORMED);
             };
 
             auto remove = [](parcelType& p)
@@ -262,19 +263,48 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
 
 
 template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::wallContact
+(
+    parcelType& p,
+    const point& x
+)
+{
+    const scalar dt = this->owner().db().time().deltaTValue();
+
+    hardSphereWallInteraction::particle wp
+    {
+        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
+    };
+    bool moved = false;
+    point xNew;
+
+    const hardSphereWallInteraction::resultType result =
+        walls_.contactAtRadius(x, wallFaces(p.cell()), dt, wp, moved, xNew);
+
+    if (result == hardSphereWallInteraction::IMPACT)
+    {
+        ++this->step_.counts[hardSphereStep::WALL];
+    }
+    if (moved)
+    {
+        p.position0() = xNew;
+        p.setStatus(parcelType::RELOCATE);
+    }
+}
+
+
+template<class CloudType>
 void Foam::HardSphereCollision<CloudType>::wallContacts
 (
     const UList<parcelType*>& parcels,
     UList<point>& x1
 )
 {
-    const scalar dt = this->owner().db().time().deltaTValue();
-
     forAll(parcels, i)
     {
         parcelType& p = *parcels[i];
 
-        if (p.hasStatus(parcelType::REMOVE))
+        if (p.hasStatus(parcelType::REMOVE) || p.hasStatus(parcelType::FORMED))
         {
             continue;
         }
@@ -285,29 +315,30 @@ void Foam::HardSphereCollision<CloudType>::wallContacts
             x1[i] = p.position0();
         }
 
-        hardSphereWallInteraction::particle wp
-        {
-            p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
-        };
-        bool moved = false;
-        point xNew;
+        wallContact(p, x1[i]);
+    }
+}
 
-        const hardSphereWallInteraction::resultType result =
-            walls_.contactAtRadius
-            (
-                x1[i], wallFaces(p.cell()), dt, wp, moved, xNew
-            );
 
-        if (result == hardSphereWallInteraction::IMPACT)
+template<class CloudType>
+bool Foam::HardSphereCollision<CloudType>::afterRelocation()
+{
+    bool relocate = false;
+
+    if (walls_.atRadius())
+    {
+        for (parcelType& p : this->owner())
         {
-            ++this->step_.counts[hardSphereStep::WALL];
-        }
-        if (moved)
-        {
-            p.position0() = xNew;
-            p.setStatus(parcelType::RELOCATE);
+            if (p.hasStatus(parcelType::FORMED))
+            {
+                // At the relocation target: position0 (exact)
+                wallContact(p, p.position0());
+                relocate = relocate || p.hasStatus(parcelType::RELOCATE);
+            }
         }
     }
+
+    return returnReduce(relocate, orOp<bool>());
 }
 
 
