@@ -556,3 +556,29 @@ def read_positions_of(case, t):
     f = case / t / "lagrangian" / "kinematicCloud" / "positions"
     return [tuple(float(v) for v in m.split()) for m in
             re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", f.read_text())]
+
+
+@pytest.mark.parametrize("tutorial,script,args", [
+    ("shearFlowValidation", "shearFlow", ["settings", "ci", "EAM"]),
+    ("verticalChannel", "channel", ["settings", "smoke", "C1", "unladen"]),
+])
+def test_case_settings_reject_unknown_entries(tmp_path, foam_env, tutorial,
+                                              script, args):
+    """The generated caseSettings pass; a misspelt entry added by hand
+    stops the tutorial's scripts that read it, naming the entry."""
+    import importlib
+    tut = ROOT / "tutorials" / tutorial
+    text = subprocess.run([sys.executable, f"{script}.py"] + args, cwd=tut,
+                          capture_output=True, text=True, check=True).stdout
+    (tmp_path / "system").mkdir()
+    f = tmp_path / "system" / "caseSettings"
+    f.write_text(text)
+    sys.path.insert(0, str(tut))
+    try:
+        module = importlib.import_module(script)
+        assert len(module.read_settings(tmp_path)) > 10
+        f.write_text(text + "\nnParticels 10;\n")
+        with pytest.raises(SystemExit, match="nParticels"):
+            module.read_settings(tmp_path)
+    finally:
+        sys.path.remove(str(tut))

@@ -137,8 +137,18 @@ def settings_text(s):
     return "\n".join(lines)
 
 
+SETTINGS_KEYS = {"preset", "run", "gammaDot", "delta", "yMin", "uWall",
+                 "uLower", "Lx", "Lz", "nx", "ny", "nz", "nParticles",
+                 "dParticle", "seed", "deltaT", "endTime", "writeInterval",
+                 "countFrom", "agglomerationModel", "collisionResponse"}
+
+
 def read_settings(case):
-    return foamio.read_dict(Path(case) / "system" / "caseSettings")
+    """The caseSettings of a run, every entry checked."""
+    f = Path(case) / "system" / "caseSettings"
+    s = foamio.read_dict(f)
+    foamio.check_keys(s, SETTINGS_KEYS, str(f))
+    return s
 
 
 # -------------------------------------------------------------------- init

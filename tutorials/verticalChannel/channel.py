@@ -221,6 +221,23 @@ clouds          {clouds};
 
 # ------------------------------------------------------------ mesh helpers
 
+SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
+                 "ny", "nz", "yGrading", "yGradingInv", "deltaT", "endTime",
+                 "writeSteps", "ddtScheme", "Ubar", "nProcs", "dParticle",
+                 "nParticles", "seed", "subModels", "coupled",
+                 "couplingScale", "cloudForces", "dispersionModel",
+                 "enParticle", "wallType", "wallCoeffs", "profileBins",
+                 "clouds"}
+
+
+def read_settings(case):
+    """The caseSettings of a stage, every entry checked."""
+    f = Path(case) / "system" / "caseSettings"
+    s = foamio.read_dict(f)
+    foamio.check_keys(s, SETTINGS_KEYS, str(f))
+    return s
+
+
 def cell_centres(case, time="0"):
     """Cell centres (postProcess -func writeCellCentres must have run)."""
     return foamio.read_internal(Path(case) / time / "C")
@@ -261,7 +278,7 @@ def init(case):
     divergence free, f = (1 - (y/delta - 1)^2)^2, plus 5 % white noise
     (removed by the first pressure projection)."""
     case = Path(case)
-    s = foamio.read_dict(case / "system/caseSettings")
+    s = read_settings(case)
     p = preset(s["preset"])
     C = cell_centres(case)
     d, Ub, A = p["delta"], p["Ubar"], p["perturb"]
@@ -327,7 +344,7 @@ def _overlaps(x, dmin, Lx, Lz):
 
 def release(case, time=None):
     case = Path(case)
-    s = foamio.read_dict(case / "system/caseSettings")
+    s = read_settings(case)
     p = preset(s["preset"])
     c = configuration(s["configuration"])
     if time is None:
@@ -373,7 +390,7 @@ def seed_pairs(case, clouds):
     run). Ids continue after the released particles. The cloud is
     rewritten with the legacy positions file (located on reading)."""
     case = Path(case)
-    s = foamio.read_dict(case / "system/caseSettings")
+    s = read_settings(case)
     p = preset(s["preset"])
     n_pairs = int(p.get("seededPairs", 0))
     if not n_pairs:
@@ -458,7 +475,7 @@ def seed_pairs(case, clouds):
 def progress(case):
     """One line: stage, T*, fraction done and ETA from the solver log."""
     case = Path(case)
-    s = foamio.read_dict(case / "system/caseSettings")
+    s = read_settings(case)
     p = preset(s["preset"])
     log = case / "log.aggloPimpleFoam"
     if not log.exists():

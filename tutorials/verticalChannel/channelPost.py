@@ -48,7 +48,7 @@ def run_dirs(pname):
         for adir in sorted(cdir.glob("agglomeration*")):
             if not (adir / "done.agglomeration").exists():
                 continue
-            s = foamio.read_dict(adir / "system/caseSettings")
+            s = channel.read_settings(adir)
             clouds = [str(c).strip("()") for c in
                       (s["clouds"] if isinstance(s["clouds"], list)
                        else [s["clouds"]])]
