@@ -138,6 +138,8 @@ CASES = {
 
 # Cases needing other sub-models in the case (forces, dispersion)
 SUBMODEL_CASES = {
+    "SchillerNaumannKey": ("particleForces {}", "particleForces "
+                           "{ SchillerNaumannDrag { Cd 0.44; } }", "Cd"),
     "rotationLiftKey": ("particleForces {}", "particleForces { rotationLift"
                         " { model OesterleBuiDinh; Uc U; } }", "Uc"),
     "rotationLiftModel": ("particleForces {}", "particleForces "

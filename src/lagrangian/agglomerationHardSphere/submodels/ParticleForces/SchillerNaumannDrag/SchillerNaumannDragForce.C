@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "SchillerNaumannDragForce.H"
+#include "hardSphereInput.H"
 #include "particleKernels.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -39,7 +40,14 @@ Foam::SchillerNaumannDragForce<CloudType>::SchillerNaumannDragForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, false)
-{}
+{
+    // No coefficients (given as a word, the force gets the list's
+    // dictionary; as a dictionary, its own)
+    if (dict.dictName() == typeName)
+    {
+        hardSphereInput::checkKeys(dict, wordList());
+    }
+}
 
 
 template<class CloudType>
