@@ -501,26 +501,37 @@ def test_two_clouds_share_one_flow(case_dir, foam_env):
 
 # ------------------------------------------ pair search vs brute force
 
-def use_brute_force(case_dir):
-    """pairSearch bruteForce in the hardSphereCoeffs of a box case."""
+def use_search(case_dir, entries):
+    """Extra pair-search entries in the hardSphereCoeffs of a box case."""
     f = case_dir / "constant" / "kinematicCloudProperties"
     text = f.read_text()
     old = "agglomerationModel "
     assert old in text
-    f.write_text(text.replace(old, "pairSearch bruteForce; " + old, 1))
+    f.write_text(text.replace(old, entries + " " + old, 1))
+
+
+def use_brute_force(case_dir):
+    use_search(case_dir, "pairSearch bruteForce;")
 
 
 def oracle_cloud(case_dir, kind, decompose=(1, 1, 1)):
     """Random clouds for the search oracle: 'gas' (periodic in x, y, z,
-    fast: about one cell per step), 'wall' (periodic in x and z, packed
-    against the lower wall, EAM), 'poly' (diameters 12-60 um, agglomerates
-    of up to 125 primaries, periodic in x and z, EAM)."""
-    rng = np.random.default_rng({"gas": 21, "wall": 22, "poly": 23}[kind])
+    fast: about one cell per step), 'fast' (the gas with one particle in
+    ten ten times faster: its box spans many bins of the others' size),
+    'wall' (periodic in x and z, packed against the lower wall, EAM),
+    'poly' (diameters 12-60 um, agglomerates of up to 125 primaries,
+    periodic in x and z, EAM)."""
+    rng = np.random.default_rng(
+        {"gas": 21, "fast": 25, "wall": 22, "poly": 23}[kind])
     Lb = 2e-4
-    if kind == "gas":
+    if kind in ("gas", "fast"):
         parts, d, U = gas_particles(400, Lb, 0.02, 0.05, seed=24)
+        if kind == "fast":
+            for p in parts[::10]:
+                p["U"] = tuple(10 * u for u in p["U"])
         box_case(case_dir, L=(Lb,) * 3, n=(5, 5, 5), kinds=("cyclic",) * 3,
-                 particles=parts, dt=2e-4, end_time=6e-3, write_interval=1,
+                 particles=parts, dt=2e-4 if kind == "gas" else 2e-5,
+                 end_time=6e-3 if kind == "gas" else 2.4e-3, write_interval=1,
                  hard_sphere=gas_kernel(0.9), decompose=decompose)
         return
     xs, ds = [], []
@@ -544,25 +555,41 @@ def oracle_cloud(case_dir, kind, decompose=(1, 1, 1)):
              decompose=decompose)
 
 
-@pytest.mark.parametrize("kind,ranks", [("gas", 0), ("wall", 0),
-                                        ("poly", 0), ("gas", 2),
+def search_checks(case_dir):
+    """The candidate counts of the pairSearchCheck lines of a run's log."""
+    text = (case_dir / "log.aggloPimpleFoam").read_text()
+    return [int(m) for m in re.findall(
+        r"pairSearchCheck: (\d+) candidate pairs, identical", text)]
+
+
+@pytest.mark.parametrize("kind,ranks", [("gas", 0), ("fast", 0),
+                                        ("wall", 0), ("poly", 0),
+                                        ("gas", 2), ("fast", 2),
                                         ("wall", 2)])
 def test_pair_search_matches_brute_force(case_dir, foam_env, kind, ranks):
-    """The InteractionLists pair search finds every pair the O(N^2) search
-    over all particles and all periodic images finds: identical counters
-    every step (any missed or extra candidate changes the events) and the
-    same particles after the first step with a collision, serial and on 2
-    ranks. The
-    particle states agree to round-off only (a referred partner's end
-    position is the barycentric position of a transformed copy there, the
-    exact shifted position here), and round-off grows chaotically with
-    every later collision."""
+    """The particleGrid pair search finds exactly the candidate pairs of
+    the O(N^2) search over all particles and all periodic images (the
+    same swept-box predicate): pairSearchCheck compares the two sets,
+    pair by pair with the partner's image position, every step on every
+    rank and stops the run if they differ. Then the runs with either
+    search give identical counters every step (any missed or extra
+    candidate changes the events) and the same particles after the first
+    step with a collision, serially and on 2 ranks; and so does the
+    InteractionLists search (serial gas and wall, 2-rank wall), the
+    baseline of bench/. The particle states agree to round-off only (a
+    referred partner's end position is the barycentric position of a
+    transformed copy in InteractionLists), and round-off grows
+    chaotically with every later collision."""
+    searches = ["particleGrid", "bruteForce"]
+    if (kind, ranks) in (("gas", 0), ("wall", 0), ("wall", 2)):
+        searches.append("interactionLists")
     out = {}
-    for search in ("interactionLists", "bruteForce"):
+    for search in searches:
         c = case_dir / search
         oracle_cloud(c, kind, decompose=(2, 1, 1))
-        if search == "bruteForce":
-            use_brute_force(c)
+        use_search(c, f"pairSearch {search};"
+                   + (" pairSearchCheck true;"
+                      if search == "particleGrid" else ""))
         run_case(c, parallel=ranks)
         if ranks:
             run([foam_bin("reconstructPar")], c, "log.reconstructPar.all")
@@ -573,15 +600,20 @@ def test_pair_search_matches_brute_force(case_dir, foam_env, kind, ranks):
                  if re.fullmatch(r"[0-9.e-]+", p.name)),
                 key=lambda name: abs(float(name) - first))
         out[search] = (rows, cloud_state(c, t))
-    rows, state = out["interactionLists"]
+    checks = search_checks(case_dir / "particleGrid")
+    # one check per step, and candidates to check
+    assert len(checks) == len(out["particleGrid"][0])
+    assert sum(checks) >= 100
+    rows, state = out["bruteForce"]
     assert rows[-1]["nCol"] >= 20
-    if kind != "gas":
+    if kind not in ("gas", "fast"):
         assert rows[-1]["nAgg"] > 0 and rows[-1]["nWall"] > 0
-    assert out["bruteForce"][0] == rows
-    other = out["bruteForce"][1]
-    assert other.keys() == state.keys()
-    for name in ("nPrimary", "origId", "origProcId", "lastPartnerId"):
-        assert other[name] == state[name], name
-    for name in ("U", "omega", "d", "rho", "lastContactTime"):
-        np.testing.assert_allclose(other[name], state[name], rtol=1e-9,
-                                   atol=1e-9, err_msg=name)
+    for search in searches[:1] + searches[2:]:
+        assert out[search][0] == rows, search
+        other = out[search][1]
+        assert other.keys() == state.keys()
+        for name in ("nPrimary", "origId", "origProcId", "lastPartnerId"):
+            assert other[name] == state[name], (search, name)
+        for name in ("U", "omega", "d", "rho", "lastContactTime"):
+            np.testing.assert_allclose(other[name], state[name], rtol=1e-9,
+                                       atol=1e-9, err_msg=(search, name))

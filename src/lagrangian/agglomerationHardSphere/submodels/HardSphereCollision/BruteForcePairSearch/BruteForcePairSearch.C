@@ -26,7 +26,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "BruteForcePairSearch.H"
-#include "cyclicPolyPatch.H"
 #include "wallPolyPatch.H"
 #include "PstreamBuffers.H"
 
@@ -39,30 +38,14 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
 )
 :
     mesh_(mesh),
-    lattice_(),
+    lattice_(mesh, "pairSearch bruteForce"),
     wallFaces_(),
     received_(),
     referred_(),
     referredX1_()
 {
-    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
-    DynamicList<vector> lattice;
     DynamicList<label> wallFaces;
-
-    // One vector per pair of opposite patches
-    auto addUnique = [&lattice](const vector& s)
-    {
-        for (const vector& e : lattice)
-        {
-            if (mag(e - s) < SMALL*mag(s) || mag(e + s) < SMALL*mag(s))
-            {
-                return;
-            }
-        }
-        lattice.append(s);
-    };
-
-    for (const polyPatch& pp : pbm)
+    for (const polyPatch& pp : mesh.boundaryMesh())
     {
         if (isA<wallPolyPatch>(pp))
         {
@@ -71,42 +54,7 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
                 wallFaces.append(pp.start() + i);
             }
         }
-
-        const cyclicPolyPatch* cycPtr = isA<cyclicPolyPatch>(pp);
-        if (!cycPtr)
-        {
-            continue;
-        }
-        if (!cycPtr->parallel() && !cycPtr->separated())
-        {
-            FatalErrorInFunction
-                << "pairSearch bruteForce: the cyclic patch " << pp.name()
-                << " is rotational; only translational cyclics are"
-                << " supported" << exit(FatalError);
-        }
-        if (!cycPtr->separated())
-        {
-            continue;
-        }
-
-        addUnique(cycPtr->separation()[0]);
     }
-
-    // The same lattice on every processor (cyclics may be on some only)
-    List<List<vector>> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = lattice;
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
-    lattice.clear();
-    for (const List<vector>& l : all)
-    {
-        for (const vector& s : l)
-        {
-            addUnique(s);
-        }
-    }
-
-    lattice_.transfer(lattice);
     wallFaces_.transfer(wallFaces);
 }
 
@@ -120,37 +68,12 @@ void Foam::BruteForcePairSearch<ParcelType>::search
     const UList<ParcelType*>& parcels,
     const UList<point>& x1,
     const List<DynamicList<ParcelType*>>&,
-    const scalar distance,
+    const scalar,
+    const scalar inflate,
     Visitor& visit
 )
 {
     const label n = parcels.size();
-    const scalar d2 = sqr(distance);
-
-    // Image shifts: all combinations of the lattice vectors e_k with the
-    // coefficients -m_k..m_k, m_k = ceil(distance/|e_k|)
-    DynamicList<vector> shifts;
-    {
-        labelList m(lattice_.size());
-        label nShifts = 1;
-        forAll(lattice_, k)
-        {
-            m[k] = ceil(distance/mag(lattice_[k]));
-            nShifts *= 2*m[k] + 1;
-        }
-        for (label c = 0; c < nShifts; ++c)
-        {
-            vector s(Zero);
-            label code = c;
-            forAll(lattice_, k)
-            {
-                const label w = 2*m[k] + 1;
-                s += scalar(code % w - m[k])*lattice_[k];
-                code /= w;
-            }
-            shifts.append(s);
-        }
-    }
 
     // Every particle of this processor to every other processor
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
@@ -209,6 +132,21 @@ void Foam::BruteForcePairSearch<ParcelType>::search
         }
     }
 
+    // Boxes of all partners, and the image shifts that can matter: boxes
+    // that overlap have end positions within D_i + D_j <= 2 D_max
+    List<boundBox> box(partner.size());
+    scalar diagMax = 0;
+    forAll(partner, k)
+    {
+        const ParcelType& pk = *partner[k];
+        box[k] = sweptBoxGrid::sweptBox
+        (
+            pk.position0(), partnerX1[k], 0.5*inflate*pk.d()
+        );
+        diagMax = max(diagMax, mag(box[k].span()));
+    }
+    const List<vector> shifts(lattice_.shifts(2*diagMax));
+
     referred_.clear();
     referredX1_.clear();
 
@@ -239,22 +177,32 @@ void Foam::BruteForcePairSearch<ParcelType>::search
                     continue;
                 }
 
-                const point xk(partnerX1[k] + s);
-                if (magSqr(xk - x1[i]) > d2)
-                {
-                    continue;
-                }
-
                 if (identity && j >= 0)
                 {
-                    visit(i, j);
+                    if (sweptBoxGrid::overlap(box[i], box[k]))
+                    {
+                        visit(i, j);
+                    }
                     continue;
                 }
 
-                // A referred copy, moved by the image shift
-                ParcelType* copy = new ParcelType(pk);
+                // An image: a copy moved by the shift (its start position
+                // with it)
+                const point xk(partnerX1[k] + s);
+                autoPtr<ParcelType> copy(new ParcelType(pk));
                 copy->transformProperties(s);
-                referred_.append(copy);
+                const boundBox bk
+                (
+                    sweptBoxGrid::sweptBox
+                    (
+                        copy->position0(), xk, 0.5*inflate*copy->d()
+                    )
+                );
+                if (!sweptBoxGrid::overlap(box[i], bk))
+                {
+                    continue;
+                }
+                referred_.append(copy.ptr());
                 referredX1_.append(xk);
                 visit(i, n + referred_.size() - 1);
             }

@@ -156,8 +156,11 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     ),
     kernel_(this->coeffDict()),
     walls_(this->coeffDict(), owner.U(), owner.keyedDispersion()),
+    gridSearch_(nullptr),
     ilSearch_(nullptr),
     bfSearch_(nullptr),
+    bfCheck_(nullptr),
+    noOccupancy_(),
     schedule_(),
     candidates_(),
     minPeriod_(GREAT)
@@ -177,7 +180,8 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     wordList valid
     ({
         "overlapTreatment", "encounterMemory", "encounterRelease",
-        "collisionResponse", "interactionDistance", "pairSearch"
+        "collisionResponse", "interactionDistance", "pairSearch",
+        "pairSearchCheck"
     });
     valid.append(hardSphereWallInteraction::keys());
     valid.append(hardSphereCollisionKernel::keys(this->coeffDict()));
@@ -187,10 +191,17 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     (
         this->coeffDict().template getOrDefault<word>
         (
-            "pairSearch", "interactionLists"
+            "pairSearch", "particleGrid"
         )
     );
-    if (search == "interactionLists")
+    if (search == "particleGrid")
+    {
+        gridSearch_.reset
+        (
+            new ParticleGridPairSearch<parcelType>(owner.mesh())
+        );
+    }
+    else if (search == "interactionLists")
     {
         ilSearch_.reset
         (
@@ -213,7 +224,24 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     {
         FatalIOErrorInFunction(this->coeffDict())
             << "pairSearch " << search << " is not valid; valid choices:"
-            << " (interactionLists bruteForce)" << exit(FatalIOError);
+            << " (particleGrid interactionLists bruteForce)"
+            << exit(FatalIOError);
+    }
+
+    const bool check =
+        this->coeffDict().template getOrDefault<bool>
+        (
+            "pairSearchCheck", false
+        );
+    if (check)
+    {
+        if (!gridSearch_.valid())
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "pairSearchCheck checks pairSearch particleGrid (it is "
+                << search << ")" << exit(FatalIOError);
+        }
+        bfCheck_.reset(new BruteForcePairSearch<parcelType>(owner.mesh()));
     }
 
     if
@@ -399,20 +427,9 @@ void Foam::HardSphereCollision<CloudType>::collide()
         candidates_.append(c);
     };
 
-    if (ilSearch_.valid())
-    {
-        ilSearch_->search
-        (
-            parcels, x1, cloud.cellOccupancy(), distance, evaluate
-        );
-    }
-    else
-    {
-        bfSearch_->search
-        (
-            parcels, x1, cloud.cellOccupancy(), distance, evaluate
-        );
-    }
+    // Boxes inflated to cover contacts and the release distance
+    const scalar inflate = release ? 1 + encounterRelease_ : 1;
+    search(parcels, x1, distance, inflate, evaluate);
 
     // Forget the last partners that moved beyond the release distance
     // (the categories of this step's events are already set)
@@ -474,6 +491,7 @@ bool Foam::HardSphereCollision<CloudType>::hitWall
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+#include "HardSphereCollisionSearch.C"
 #include "HardSphereCollisionApply.C"
 
 // ************************************************************************* //

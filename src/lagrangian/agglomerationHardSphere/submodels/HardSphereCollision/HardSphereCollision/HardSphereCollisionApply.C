@@ -279,7 +279,10 @@ void Foam::HardSphereCollision<CloudType>::wallContact
     point xNew;
 
     const hardSphereWallInteraction::resultType result =
-        walls_.contactAtRadius(x, wallFaces(p.cell()), dt, wp, moved, xNew);
+        walls_.contactAtRadius
+        (
+            x, wallFaces(p.cell(), 0.5*p.d()), dt, wp, moved, xNew
+        );
 
     if (result == hardSphereWallInteraction::IMPACT)
     {

@@ -85,6 +85,7 @@ void Foam::InteractionListsPairSearch<ParcelType>::search
     const UList<point>& x1,
     const List<DynamicList<ParcelType*>>& cellOccupancy,
     const scalar distance,
+    const scalar,
     Visitor& visit
 )
 {

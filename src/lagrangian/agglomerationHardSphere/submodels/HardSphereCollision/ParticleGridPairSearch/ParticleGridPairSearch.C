@@ -1,0 +1,355 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "ParticleGridPairSearch.H"
+#include "wallPolyPatch.H"
+#include "PstreamBuffers.H"
+#include "treeBoundBox.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class ParcelType>
+inline Foam::scalar Foam::ParticleGridPairSearch<ParcelType>::distSqr
+(
+    const point& x,
+    const boundBox& bb
+)
+{
+    scalar d2 = 0;
+    for (direction c = 0; c < 3; ++c)
+    {
+        const scalar e =
+            max(max(bb.min()[c] - x[c], x[c] - bb.max()[c]), scalar(0));
+        d2 += e*e;
+    }
+    return d2;
+}
+
+
+template<class ParcelType>
+void Foam::ParticleGridPairSearch<ParcelType>::refer
+(
+    const UList<ParcelType*>& parcels,
+    const UList<point>& x1,
+    const UList<scalar>& diag,
+    const scalar diagMax
+)
+{
+    const label me = Pstream::myProcNo();
+    const boundBox& own = procBb_[me];
+
+    images_.clear();
+    received_.clear();
+    received_.setSize(Pstream::nProcs());
+    referred_.clear();
+    referredX1_.clear();
+
+    // The (processor, shift) targets within reach of this box: a particle
+    // refers at most 2 diagMax from its end position
+    const scalar reach = 2*diagMax;
+    DynamicList<label> targetProc;
+    DynamicList<label> targetShift;
+    bool interiorFree = true;
+    const vector r3(reach, reach, reach);
+    const vector i3(1.01*r3 + 1e-9*own.span());
+    const boundBox interior(own.min() + i3, own.max() - i3);
+
+    forAll(procBb_, k)
+    {
+        if (!procBb_[k].valid())
+        {
+            continue;
+        }
+        forAll(shifts_, si)
+        {
+            if (k == me && si == 0)
+            {
+                continue;
+            }
+            const boundBox b
+            (
+                procBb_[k].min() - shifts_[si], procBb_[k].max() - shifts_[si]
+            );
+            const boundBox grown(b.min() - r3, b.max() + r3);
+            if (!sweptBoxGrid::overlap(own, grown))
+            {
+                continue;
+            }
+            targetProc.append(k);
+            targetShift.append(si);
+
+            // Does the target reach into the interior? (then no particle
+            // may skip the tests)
+            if (interior.valid() && sweptBoxGrid::overlap(interior, grown))
+            {
+                interiorFree = false;
+            }
+        }
+    }
+
+    // Per processor: the copies and their end positions
+    List<IDLList<ParcelType>> sendParcels(Pstream::nProcs());
+    List<DynamicList<point>> sendX1(Pstream::nProcs());
+
+    forAll(parcels, i)
+    {
+        const point& x = x1[i];
+        if (interiorFree && interior.valid() && interior.contains(x))
+        {
+            continue;
+        }
+        const scalar crit2 = sqr(diag[i] + diagMax);
+
+        forAll(targetProc, t)
+        {
+            const label k = targetProc[t];
+            const vector& s = shifts_[targetShift[t]];
+            const point xs(x + s);
+            if (distSqr(xs, procBb_[k]) > crit2)
+            {
+                continue;
+            }
+
+            ParcelType* copy = new ParcelType(*parcels[i]);
+            copy->transformProperties(s);
+            if (k == me)
+            {
+                images_.append(copy);
+                referred_.append(copy);
+                referredX1_.append(xs);
+            }
+            else
+            {
+                sendParcels[k].append(copy);
+                sendX1[k].append(xs);
+            }
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(sendParcels, k)
+    {
+        if (k != me && sendParcels[k].size())
+        {
+            UOPstream os(k, pBufs);
+            os << sendX1[k] << sendParcels[k];
+        }
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    forAll(received_, k)
+    {
+        if (k == me || !recvSizes[k])
+        {
+            continue;
+        }
+        UIPstream is(k, pBufs);
+        const List<point> theirX1(is);
+        received_.set
+        (
+            k,
+            new IDLList<ParcelType>(is, typename ParcelType::iNew(mesh_))
+        );
+        label q = 0;
+        for (const ParcelType& p : received_[k])
+        {
+            referred_.append(&p);
+            referredX1_.append(theirX1[q++]);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::ParticleGridPairSearch<ParcelType>::ParticleGridPairSearch
+(
+    const polyMesh& mesh
+)
+:
+    mesh_(mesh),
+    lattice_(mesh, "pairSearch particleGrid"),
+    shifts_(lattice_.shifts(0.5*lattice_.minPeriod())),
+    procBb_(Pstream::nProcs()),
+    grid_(),
+    images_(),
+    received_(),
+    referred_(),
+    referredX1_(),
+    wallTree_(nullptr),
+    cellWallFaces_(),
+    cellWallDone_(),
+    wallDistance_(-1)
+{
+    // Every processor's bounding box (an empty one is invalid)
+    procBb_[Pstream::myProcNo()] =
+        mesh.nCells() ? boundBox(mesh.points(), false) : boundBox();
+    Pstream::gatherList(procBb_);
+    Pstream::scatterList(procBb_);
+
+    // The wall faces of this processor
+    DynamicList<label> wallFaces;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<wallPolyPatch>(pp))
+        {
+            forAll(pp, i)
+            {
+                wallFaces.append(pp.start() + i);
+            }
+        }
+    }
+    if (wallFaces.size())
+    {
+        treeBoundBox bb(mesh.points());
+        bb.inflate(1e-4);
+        wallTree_.reset
+        (
+            new indexedOctree<treeDataFace>
+            (
+                treeDataFace(true, mesh, labelList(wallFaces)),
+                bb,
+                8,          // maxLevel
+                10,         // leafSize
+                100.0       // duplicity
+            )
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+template<class Visitor>
+void Foam::ParticleGridPairSearch<ParcelType>::search
+(
+    const UList<ParcelType*>& parcels,
+    const UList<point>& x1,
+    const List<DynamicList<ParcelType*>>&,
+    const scalar,
+    const scalar inflate,
+    Visitor& visit
+)
+{
+    const label n = parcels.size();
+
+    // Swept boxes of the real particles and their diagonals
+    List<boundBox> boxes(n);
+    scalarList diag(n);
+    scalar diagMax = 0;
+    forAll(parcels, i)
+    {
+        const ParcelType& p = *parcels[i];
+        boxes[i] = sweptBoxGrid::sweptBox
+        (
+            p.position0(), x1[i], 0.5*inflate*p.d()
+        );
+        diag[i] = mag(boxes[i].span());
+        diagMax = max(diagMax, diag[i]);
+    }
+    reduce(diagMax, maxOp<scalar>());
+
+    refer(parcels, x1, diag, diagMax);
+
+    // The referred partners' boxes (their start positions are shifted
+    // with them)
+    const label m = referred_.size();
+    boxes.setSize(n + m);
+    forAll(referred_, k)
+    {
+        const ParcelType& p = *referred_[k];
+        boxes[n + k] = sweptBoxGrid::sweptBox
+        (
+            p.position0(), referredX1_[k], 0.5*inflate*p.d()
+        );
+    }
+
+    grid_.build(std::move(boxes), n, 0);
+    grid_.pairs(visit);
+}
+
+
+template<class ParcelType>
+const Foam::labelList& Foam::ParticleGridPairSearch<ParcelType>::wallFaces
+(
+    const label celli,
+    const scalar r
+) const
+{
+    static const labelList none;
+    if (!wallTree_.valid())
+    {
+        return none;
+    }
+
+    if (r > wallDistance_)
+    {
+        // (Re)build the cache for a larger reach
+        wallDistance_ = 1.5*r;
+        cellWallFaces_.clear();
+        cellWallFaces_.setSize(mesh_.nCells());
+        cellWallDone_.clear();
+        cellWallDone_.resize(mesh_.nCells());
+    }
+
+    if (!cellWallDone_.test(celli))
+    {
+        const vector w(wallDistance_, wallDistance_, wallDistance_);
+        const boundBox cellBb
+        (
+            mesh_.cells()[celli].points(mesh_.faces(), mesh_.points()),
+            false
+        );
+        const labelList elems
+        (
+            wallTree_->findBox
+            (
+                treeBoundBox(cellBb.min() - w, cellBb.max() + w)
+            )
+        );
+        labelList& faces = cellWallFaces_[celli];
+        faces.setSize(elems.size());
+        forAll(elems, e)
+        {
+            faces[e] = wallTree_->shapes().faceLabels()[elems[e]];
+        }
+        cellWallDone_.set(celli);
+    }
+
+    return cellWallFaces_[celli];
+}
+
+
+// ************************************************************************* //
