@@ -9,14 +9,19 @@ box holding N quartz particles of 12 um with random positions and Gaussian
 velocities (sigma 0.5 m/s), fluid at rest (frozen), drag and gravity,
 dt = 1.1e-5 s (the paper's channel step), 2.9 particles per cell.
 
-For N = 1e4, 1e5, 3e5 it runs 21 steps and reports, per particle and step
-(first step excluded: it builds the interaction lists):
+For N = 1e4, 1e5, 3e5 it runs 21 steps with each pair search: the
+baseline interactionLists (OpenFOAM's InteractionLists: mesh cells as
+bins) and particleGrid (the default: swept boxes in a hashed grid), and
+reports, per particle and step (first step excluded: it builds the
+interaction lists; its time is reported apart):
   tracking [us], collision stage [us], their ratio (target <= 15 %),
   and the peak memory per particle against the same mesh without
-  particles (target <= 400 B). The ratio of the per-particle costs at 3e5
-  and 1e4 checks O(N) (target: flat within 30 %).
+  particles (target <= 400 B); then the ratio of the collision stages
+  interactionLists / particleGrid measured in this run. The ratio of the
+  per-particle costs at 3e5 and 1e4 checks O(N) (target: flat within
+  30 %).
 
-Usage (after ./Allwmake; about 3 minutes on one core):
+Usage (after ./Allwmake; about 6 minutes on one core):
     source etc/bashrc && .venv/bin/python bench/hardSphereCloud.py [N ...]
 """
 
@@ -41,7 +46,10 @@ PER_CELL = 6e6 / 128**3
 D, DT, STEPS = 12e-6, 1.1e-5, 21
 
 
-def make_case(case, N, particles=True):
+SEARCHES = ("interactionLists", "particleGrid")
+
+
+def make_case(case, N, particles=True, search="particleGrid"):
     shutil.rmtree(case, ignore_errors=True)
     Lb = (N / N_DENSITY) ** (1 / 3)
     nc = max(2, round((N / PER_CELL) ** (1 / 3)))
@@ -58,6 +66,7 @@ def make_case(case, N, particles=True):
                     forces="{ sphereDrag; gravity; }",
                     gravity=(0, -9.81, 0), rotation=True,
                     hard_sphere=hscase.KERNEL
+                    + f"    pairSearch {search};\n"
                     + "    agglomerationModel EAM;\n    walls {}\n")
     return nc**3
 
@@ -78,39 +87,51 @@ def times(case):
     text = (Path(case) / "log.aggloPimpleFoam").read_text()
     rows = re.findall(r"tracking ([0-9.eE+-]+) s, collision stage "
                       r"([0-9.eE+-]+) s", text)
-    rows = np.array(rows[1:], dtype=float)  # drop the list-building step
-    return rows[:, 0].sum(), rows[:, 1].sum(), len(rows)
+    rows = np.array(rows, dtype=float)
+    first = rows[0].sum()  # the first step builds the interaction lists
+    rows = rows[1:]
+    return rows[:, 0].sum(), rows[:, 1].sum(), len(rows), first
 
 
 
 def main():
     Ns = [int(float(a)) for a in sys.argv[1:]] or [10000, 100000, 300000]
     work = ROOT / "bench" / "runs"
-    results = []
+    results = {search: [] for search in SEARCHES}
     for N in Ns:
-        case = work / f"N{N}"
         empty = work / f"N{N}_empty"
-        cells = make_case(case, N)
         make_case(empty, N, particles=False)
-        rss, wall = run(case)
         rss0, _ = run(empty)
-        track, coll, steps = times(case)
-        res = dict(N=N, cells=cells, steps=steps,
-                   track_us=1e6 * track / (N * steps),
-                   coll_us=1e6 * coll / (N * steps),
-                   bytes=(rss - rss0) / N, wall=wall)
-        res["ratio"] = res["coll_us"] / res["track_us"]
-        results.append(res)
-        print(f"N={N:>7} cells={cells:>7}: tracking {res['track_us']:.3f} "
-              f"us, collision stage {res['coll_us']:.3f} us per "
-              f"particle-step, collision/tracking {100*res['ratio']:.1f} %,"
-              f" memory {res['bytes']:.0f} B/particle, run {wall:.1f} s",
+        for search in SEARCHES:
+            case = work / f"N{N}_{search}"
+            cells = make_case(case, N, search=search)
+            rss, wall = run(case)
+            track, coll, steps, first = times(case)
+            res = dict(N=N, cells=cells, steps=steps,
+                       track_us=1e6 * track / (N * steps),
+                       coll_us=1e6 * coll / (N * steps),
+                       bytes=(rss - rss0) / N, wall=wall, first=first)
+            res["ratio"] = res["coll_us"] / res["track_us"]
+            results[search].append(res)
+            print(f"N={N:>7} cells={cells:>7} {search:>16}: tracking "
+                  f"{res['track_us']:.3f} us, collision stage "
+                  f"{res['coll_us']:.3f} us per particle-step, "
+                  f"collision/tracking {100*res['ratio']:.1f} %, first "
+                  f"step {first:.2f} s, memory {res['bytes']:.0f} "
+                  f"B/particle, run {wall:.1f} s", flush=True)
+        a, b = results[SEARCHES[0]][-1], results[SEARCHES[1]][-1]
+        print(f"N={N:>7}: collision stage {SEARCHES[0]} / {SEARCHES[1]} = "
+              f"{a['coll_us']/b['coll_us']:.2f}, first step "
+              f"{a['first']/b['first']:.2f}, run {a['wall']/b['wall']:.2f}",
               flush=True)
-    if len(results) > 1:
-        a, b = results[0], results[-1]
-        print(f"O(N) check: per-particle cost at N={b['N']} / N={a['N']}: "
-              f"tracking {b['track_us']/a['track_us']:.2f}, collision stage "
-              f"{b['coll_us']/a['coll_us']:.2f} (target within 1.3)")
+    for search in SEARCHES:
+        r = results[search]
+        if len(r) > 1:
+            a, b = r[0], r[-1]
+            print(f"O(N) check ({search}): per-particle cost at "
+                  f"N={b['N']} / N={a['N']}: tracking "
+                  f"{b['track_us']/a['track_us']:.2f}, collision stage "
+                  f"{b['coll_us']/a['coll_us']:.2f} (target within 1.3)")
 
 
 if __name__ == "__main__":

@@ -42,6 +42,7 @@ Foam::sweptBoxGrid::sweptBoxGrid()
     nReal_(0),
     origin_(Zero),
     spacing_(1),
+    invSpacing_(1),
     slotKey_(),
     binStart_(1, Zero),
     binItems_(),
@@ -84,7 +85,7 @@ void Foam::sweptBoxGrid::build
 
     if (spacing <= 0)
     {
-        spacing = meanExtent;
+        spacing = 2*meanExtent;
     }
     const scalar extent = cmptMax(hi - lo);
     if (spacing <= 0 || extent/spacing > maxBins)
@@ -94,6 +95,7 @@ void Foam::sweptBoxGrid::build
     }
     origin_ = lo;
     spacing_ = spacing;
+    invSpacing_ = 1/spacing;
 
     // Bin ranges and number of insertions
     label nInsert = 0;

@@ -229,10 +229,14 @@ void Foam::HardSphereCloud<CloudType>::motion
 {
     clockTime timer;
 
-    // Start-of-step positions
+    // Start-of-step positions: the end positions of the last collision
+    // stage where known (position() is expensive), else computed
     for (parcelType& p : *this)
     {
-        p.position0() = p.position();
+        if (!p.hasStatus(parcelType::POSITION_KNOWN))
+        {
+            p.position0() = p.position();
+        }
         p.status() = 0;
     }
     collisionModel_->resetStep();

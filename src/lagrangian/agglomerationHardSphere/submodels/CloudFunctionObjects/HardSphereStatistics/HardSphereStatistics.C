@@ -144,7 +144,12 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
 
         if (profiles)
         {
-            const label b = st.bin(p.position());
+            // The position of the collision stage where known
+            const label b = st.bin
+            (
+                p.hasStatus(parcelType::POSITION_KNOWN)
+              ? p.position0() : p.position()
+            );
             if (b >= 0)
             {
                 visits[b] += 1;

@@ -460,6 +460,22 @@ void Foam::HardSphereCollision<CloudType>::collide()
     {
         wallContacts(parcels, x1);
     }
+
+    // The end positions are the next step's start positions, except for
+    // the parcels still to be moved or removed
+    forAll(parcels, i)
+    {
+        parcelType& p = *parcels[i];
+        if
+        (
+            !p.hasStatus(parcelType::RELOCATE)
+         && !p.hasStatus(parcelType::REMOVE)
+        )
+        {
+            p.position0() = x1[i];
+            p.setStatus(parcelType::POSITION_KNOWN);
+        }
+    }
 }
 
 
