@@ -479,32 +479,6 @@ void Foam::HardSphereCollision<CloudType>::collide()
 }
 
 
-template<class CloudType>
-bool Foam::HardSphereCollision<CloudType>::hitWall
-(
-    parcelType& p,
-    const polyPatch& pp
-)
-{
-    if (!walls_.handles(pp.index()))
-    {
-        return false;
-    }
-
-    hardSphereWallInteraction::particle wp
-    {
-        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
-    };
-
-    if (walls_.hitCentre(p.face(), wp, p.stepFraction()))
-    {
-        ++this->step_.counts[hardSphereStep::WALL_CENTRE];
-    }
-
-    return true;
-}
-
-
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 #include "HardSphereCollisionSearch.C"

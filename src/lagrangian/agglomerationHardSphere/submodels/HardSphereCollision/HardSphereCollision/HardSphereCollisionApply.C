@@ -24,8 +24,9 @@ License
     along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
 
 Description
-    HardSphereCollision: applying the accepted events and the wall contacts
-    at one radius (included by HardSphereCollision.C).
+    HardSphereCollision: applying the accepted events, the wall contacts
+    at one radius and the centre-hit fallback (included by
+    HardSphereCollision.C).
 
 \*---------------------------------------------------------------------------*/
 
@@ -320,6 +321,32 @@ void Foam::HardSphereCollision<CloudType>::wallContacts
 
         wallContact(p, x1[i]);
     }
+}
+
+
+template<class CloudType>
+bool Foam::HardSphereCollision<CloudType>::hitWall
+(
+    parcelType& p,
+    const polyPatch& pp
+)
+{
+    if (!walls_.handles(pp.index()))
+    {
+        return false;
+    }
+
+    hardSphereWallInteraction::particle wp
+    {
+        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
+    };
+
+    if (walls_.hitCentre(p.face(), wp, p.stepFraction()))
+    {
+        ++this->step_.counts[hardSphereStep::WALL_CENTRE];
+    }
+
+    return true;
 }
 
 
