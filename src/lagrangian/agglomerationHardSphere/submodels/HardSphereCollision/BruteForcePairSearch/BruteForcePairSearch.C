@@ -26,7 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "BruteForcePairSearch.H"
-#include "wallPolyPatch.H"
+#include "hardSphereWallInteraction.H"
 #include "PstreamBuffers.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -39,24 +39,11 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
 :
     mesh_(mesh),
     lattice_(mesh, "pairSearch bruteForce"),
-    wallFaces_(),
+    wallFaces_(hardSphereWallInteraction::wallFaces(mesh)),
     received_(),
     referred_(),
     referredX1_()
-{
-    DynamicList<label> wallFaces;
-    for (const polyPatch& pp : mesh.boundaryMesh())
-    {
-        if (isA<wallPolyPatch>(pp))
-        {
-            forAll(pp, i)
-            {
-                wallFaces.append(pp.start() + i);
-            }
-        }
-    }
-    wallFaces_.transfer(wallFaces);
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -26,7 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "ParticleGridPairSearch.H"
-#include "wallPolyPatch.H"
+#include "hardSphereWallInteraction.H"
 #include "PstreamBuffers.H"
 #include "treeBoundBox.H"
 
@@ -219,17 +219,7 @@ Foam::ParticleGridPairSearch<ParcelType>::ParticleGridPairSearch
     Pstream::scatterList(procBb_);
 
     // The wall faces of this processor
-    DynamicList<label> wallFaces;
-    for (const polyPatch& pp : mesh.boundaryMesh())
-    {
-        if (isA<wallPolyPatch>(pp))
-        {
-            forAll(pp, i)
-            {
-                wallFaces.append(pp.start() + i);
-            }
-        }
-    }
+    const labelList wallFaces(hardSphereWallInteraction::wallFaces(mesh));
     if (wallFaces.size())
     {
         treeBoundBox bb(mesh.points());
@@ -238,7 +228,7 @@ Foam::ParticleGridPairSearch<ParcelType>::ParticleGridPairSearch
         (
             new indexedOctree<treeDataFace>
             (
-                treeDataFace(true, mesh, labelList(wallFaces)),
+                treeDataFace(true, mesh, wallFaces),
                 bb,
                 8,          // maxLevel
                 10,         // leafSize

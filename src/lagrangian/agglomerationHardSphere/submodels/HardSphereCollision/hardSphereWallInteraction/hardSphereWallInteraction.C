@@ -131,6 +131,26 @@ Foam::hardSphereWallInteraction::hardSphereWallInteraction
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::labelList Foam::hardSphereWallInteraction::wallFaces
+(
+    const polyMesh& mesh
+)
+{
+    DynamicList<label> faces;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<wallPolyPatch>(pp))
+        {
+            forAll(pp, i)
+            {
+                faces.append(pp.start() + i);
+            }
+        }
+    }
+    return labelList(std::move(faces));
+}
+
+
 Foam::hardSphereWallInteraction::resultType
 Foam::hardSphereWallInteraction::contactAtRadius
 (
