@@ -395,13 +395,14 @@ def test_parallel_round_trip_loses_nothing(case_dir, foam_env):
 def test_displacement_beyond_half_a_period(case_dir, foam_env):
     """A particle moving more than the periodic length in one step collided
     with the wrong image and the pair ended overlapping, without a warning:
-    now the search distance is checked against half the shortest period."""
+    now the reach of the search along each axis is checked against half
+    the period along it."""
     parts = [dict(x=(0.2 * L, 0.5 * L, 0.5 * L), U=(2.0, 0, 0), id=0),
              dict(x=(0.6 * L, 0.5 * L, 0.5 * L), U=(0, 0, 0), id=1)]
     box_case(case_dir, L=(L, L, L), particles=parts, dt=1e-4, end_time=2e-4,
              kinds=("cyclic", "wall", "wall"))
     res = run_case(case_dir, check=False)
-    assert_fatal_naming(res, "half the shortest periodic length")
+    assert_fatal_naming(res, "more than half the periodic length along x")
 
 
 def test_vtkcloud_writes_every_parcel_field(case_dir, foam_env):

@@ -518,12 +518,32 @@ def oracle_cloud(case_dir, kind, decompose=(1, 1, 1)):
     """Random clouds for the search oracle: 'gas' (periodic in x, y, z,
     fast: about one cell per step), 'fast' (the gas with one particle in
     ten ten times faster: its box spans many bins of the others' size),
-    'wall' (periodic in x and z, packed against the lower wall, EAM),
+    'stream' (four gases side by side in a box 4 x 1 x 1, streaming at
+    +3 m/s along x, one particle in ten at +2 m/s: per step they move
+    more than a quarter of the short y and z periods, which only the
+    per-axis reach check admits), 'wall' (periodic in x and z, packed
+    against the lower wall, EAM),
     'poly' (diameters 12-60 um, agglomerates of up to 125 primaries,
     periodic in x and z, EAM)."""
     rng = np.random.default_rng(
-        {"gas": 21, "fast": 25, "wall": 22, "poly": 23}[kind])
+        {"gas": 21, "fast": 25, "wall": 22, "poly": 23, "stream": 26}[kind])
     Lb = 2e-4
+    if kind == "stream":
+        parts = []
+        for m in range(4):
+            gas, d, U = gas_particles(400, Lb, 0.02, 0.05, seed=30 + m)
+            for p in gas:
+                x, u = p["x"], p["U"]
+                p["x"] = (x[0] + m * Lb, x[1], x[2])
+                p["id"] = len(parts)
+                p["U"] = (u[0] + (2 if p["id"] % 10 == 0 else 3),
+                          u[1], u[2])
+                parts.append(p)
+        box_case(case_dir, L=(4 * Lb, Lb, Lb), n=(20, 5, 5),
+                 kinds=("cyclic",) * 3, particles=parts, dt=2e-5,
+                 end_time=1.2e-3, write_interval=1,
+                 hard_sphere=gas_kernel(0.9), decompose=decompose)
+        return
     if kind in ("gas", "fast"):
         parts, d, U = gas_particles(400, Lb, 0.02, 0.05, seed=24)
         if kind == "fast":
@@ -564,8 +584,9 @@ def search_checks(case_dir):
 
 @pytest.mark.parametrize("kind,ranks", [("gas", 0), ("fast", 0),
                                         ("wall", 0), ("poly", 0),
-                                        ("gas", 2), ("fast", 2),
-                                        ("wall", 2)])
+                                        ("stream", 0), ("gas", 2),
+                                        ("fast", 2), ("wall", 2),
+                                        ("stream", 2)])
 def test_pair_search_matches_brute_force(case_dir, foam_env, kind, ranks):
     """The particleGrid pair search finds exactly the candidate pairs of
     the O(N^2) search over all particles and all periodic images (the
@@ -606,7 +627,7 @@ def test_pair_search_matches_brute_force(case_dir, foam_env, kind, ranks):
     assert sum(checks) >= 100
     rows, state = out["bruteForce"]
     assert rows[-1]["nCol"] >= 20
-    if kind not in ("gas", "fast"):
+    if kind not in ("gas", "fast", "stream"):
         assert rows[-1]["nAgg"] > 0 and rows[-1]["nWall"] > 0
     for search in searches[:1] + searches[2:]:
         assert out[search][0] == rows, search

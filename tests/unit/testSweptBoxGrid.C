@@ -192,6 +192,43 @@ TEST(SweptBoxGrid, AnySpacingGivesTheSamePairs)
 }
 
 
+TEST(SweptBoxGrid, ShearFlowBoxesGetLongBins)
+{
+    // A shear flow with a large step: streamwise displacements up to 40
+    // radii (u = y), spanwise and wall-normal ones of a tenth of a radius
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    const scalar r = 0.002;
+    List<boundBox> boxes(3000);
+    forAll(boxes, i)
+    {
+        const point x0(u(gen), u(gen), 0.1*u(gen));
+        const vector dx
+        (
+            40*r*(2*x0.y() - 1), 0.1*r*(2*u(gen) - 1), 0.1*r*(2*u(gen) - 1)
+        );
+        boxes[i] = sweptBoxGrid::sweptBox(x0, x0 + dx, r);
+    }
+    EXPECT_GT(bruteForce(boxes, boxes.size()).size(), 100u);
+    expectOracle(boxes, boxes.size());
+
+    // Twice the mean extent along each axis: long bins along the flow
+    sweptBoxGrid grid;
+    List<boundBox> copy(boxes);
+    grid.build(std::move(copy), boxes.size(), 0);
+    vector mean(Zero);
+    for (const boundBox& b : boxes)
+    {
+        mean += b.span()/boxes.size();
+    }
+    for (direction c = 0; c < 3; ++c)
+    {
+        EXPECT_NEAR(grid.spacing()[c], 2*mean[c], 1e-12);
+    }
+    EXPECT_GT(grid.spacing().x(), 5*grid.spacing().y());
+}
+
+
 TEST(SweptBoxGrid, TouchingAndDegenerateBoxes)
 {
     // Boxes touching on a face, at a corner, points on a bin edge, and

@@ -29,8 +29,6 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const uint64_t Foam::sweptBoxGrid::EMPTY = ~uint64_t(0);
-
 const Foam::label Foam::sweptBoxGrid::maxBins = (1 << 21) - 2;
 
 
@@ -41,12 +39,12 @@ Foam::sweptBoxGrid::sweptBoxGrid()
     boxes_(),
     nReal_(0),
     origin_(Zero),
-    spacing_(1),
-    invSpacing_(1),
-    slotKey_(),
-    binStart_(1, Zero),
-    binItems_(),
-    binKey_()
+    spacing_(1, 1, 1),
+    invSpacing_(1, 1, 1),
+    mask_(0),
+    start_(1, Zero),
+    items_(),
+    itemKey_()
 {}
 
 
@@ -56,7 +54,7 @@ void Foam::sweptBoxGrid::build
 (
     List<boundBox>&& boxes,
     const label nReal,
-    scalar spacing
+    const scalar spacing
 )
 {
     boxes_.transfer(boxes);
@@ -65,37 +63,37 @@ void Foam::sweptBoxGrid::build
     const label n = boxes_.size();
     if (n == 0)
     {
-        binStart_ = labelList(1, Zero);
-        binItems_.clear();
-        binKey_.clear();
+        start_ = labelList(1, Zero);
+        items_.clear();
+        itemKey_.clear();
         return;
     }
 
     // Origin, extent and spacing
     point lo(boxes_[0].min());
     point hi(boxes_[0].max());
-    scalar meanExtent = 0;
+    vector meanExtent(Zero);
     for (const boundBox& b : boxes_)
     {
         lo = min(lo, b.min());
         hi = max(hi, b.max());
-        meanExtent += cmptMax(b.span());
+        meanExtent += b.span();
     }
     meanExtent /= n;
 
-    if (spacing <= 0)
+    const vector extent(hi - lo);
+    for (direction c = 0; c < 3; ++c)
     {
-        spacing = 2*meanExtent;
-    }
-    const scalar extent = cmptMax(hi - lo);
-    if (spacing <= 0 || extent/spacing > maxBins)
-    {
-        // Degenerate boxes, or too many bins for the key: coarser
-        spacing = max(extent/maxBins, VSMALL);
+        scalar h = spacing > 0 ? spacing : 2*meanExtent[c];
+        if (h <= 0 || extent[c]/h > maxBins)
+        {
+            // Degenerate boxes, or too many bins for the key: coarser
+            h = max(extent[c]/maxBins, VSMALL);
+        }
+        spacing_[c] = h;
+        invSpacing_[c] = 1/h;
     }
     origin_ = lo;
-    spacing_ = spacing;
-    invSpacing_ = 1/spacing;
 
     // Bin ranges and number of insertions
     label nInsert = 0;
@@ -113,19 +111,41 @@ void Foam::sweptBoxGrid::build
         nInsert += m;
     }
 
-    // Open-addressing hash table of the bins, at most half full
+    // Buckets: a power of 2 >= the number of insertions
     label bits = 4;
-    while ((label(1) << bits) < 2*nInsert)
+    while ((label(1) << bits) < nInsert)
     {
         ++bits;
     }
-    const uint64_t mask = (uint64_t(1) << bits) - 1;
-    slotKey_.setSize(label(1) << bits);
-    slotKey_ = EMPTY;
-    labelList slotCount(slotKey_.size(), Zero);
-    labelList insertSlot(nInsert);
+    mask_ = (uint64_t(1) << bits) - 1;
+    const label nBuckets = label(1) << bits;
 
-    label ins = 0;
+    // Counting sort of the insertions by bucket: count, then place (items
+    // ascend within a bucket)
+    start_.setSize(nBuckets + 1);
+    start_ = 0;
+    forAll(boxes_, i)
+    {
+        const FixedList<label, 6>& r = range[i];
+        for (label bi = r[0]; bi <= r[3]; ++bi)
+        {
+            for (label bj = r[1]; bj <= r[4]; ++bj)
+            {
+                for (label bk = r[2]; bk <= r[5]; ++bk)
+                {
+                    ++start_[bucket(key(bi, bj, bk)) + 1];
+                }
+            }
+        }
+    }
+    for (label b = 0; b < nBuckets; ++b)
+    {
+        start_[b + 1] += start_[b];
+    }
+
+    labelList fill(SubList<label>(start_, nBuckets));
+    items_.setSize(nInsert);
+    itemKey_.setSize(nInsert);
     forAll(boxes_, i)
     {
         const FixedList<label, 6>& r = range[i];
@@ -136,54 +156,11 @@ void Foam::sweptBoxGrid::build
                 for (label bk = r[2]; bk <= r[5]; ++bk)
                 {
                     const uint64_t k = key(bi, bj, bk);
-                    uint64_t s = ((k*0x9E3779B97F4A7C15ull) >> 20) & mask;
-                    while (slotKey_[s] != EMPTY && slotKey_[s] != k)
-                    {
-                        s = (s + 1) & mask;
-                    }
-                    slotKey_[s] = k;
-                    ++slotCount[s];
-                    insertSlot[ins++] = s;
+                    const label pos = fill[bucket(k)]++;
+                    items_[pos] = i;
+                    itemKey_[pos] = k;
                 }
             }
-        }
-    }
-
-    // Compact bins (in slot order) and their starts
-    labelList slotBin(slotKey_.size(), -1);
-    label nBins = 0;
-    forAll(slotKey_, s)
-    {
-        if (slotKey_[s] != EMPTY)
-        {
-            slotBin[s] = nBins++;
-        }
-    }
-    binKey_.setSize(nBins);
-    binStart_.setSize(nBins + 1);
-    binStart_[0] = 0;
-    forAll(slotKey_, s)
-    {
-        const label b = slotBin[s];
-        if (b >= 0)
-        {
-            binKey_[b] = slotKey_[s];
-            binStart_[b + 1] = binStart_[b] + slotCount[s];
-        }
-    }
-
-    // Items, ascending within each bin
-    labelList fill(SubList<label>(binStart_, nBins));
-    binItems_.setSize(nInsert);
-    ins = 0;
-    forAll(boxes_, i)
-    {
-        const FixedList<label, 6>& r = range[i];
-        const label m =
-            (r[3] - r[0] + 1)*(r[4] - r[1] + 1)*(r[5] - r[2] + 1);
-        for (label q = 0; q < m; ++q)
-        {
-            binItems_[fill[slotBin[insertSlot[ins++]]]++] = i;
         }
     }
 }

@@ -163,17 +163,9 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     noOccupancy_(),
     schedule_(),
     candidates_(),
-    minPeriod_(GREAT)
+    period_(GREAT, GREAT, GREAT)
 {
-    for (const polyPatch& pp : owner.mesh().boundaryMesh())
-    {
-        const cyclicPolyPatch* cycPtr = isA<cyclicPolyPatch>(pp);
-        if (cycPtr && cycPtr->separated())
-        {
-            minPeriod_ = min(minPeriod_, mag(cycPtr->separation()[0]));
-        }
-    }
-    reduce(minPeriod_, minOp<scalar>());
+    setPeriods();
 
     // Every entry of hardSphereCoeffs is read by this model, the wall
     // interaction or the kernel
@@ -293,7 +285,8 @@ void Foam::HardSphereCollision<CloudType>::collide()
     List<point> x1(n);
 
     scalar dMax = 0;
-    scalar dxMax = 0;
+    scalar dxMag = 0;
+    vector dxMax(Zero);
     {
         label i = 0;
         for (parcelType& p : cloud)
@@ -311,29 +304,21 @@ void Foam::HardSphereCollision<CloudType>::collide()
             parcels[i] = &p;
             x1[i] = p.position();
             dMax = max(dMax, p.d());
-            dxMax = max(dxMax, mag(x1[i] - p.position0()));
+            const vector dx(x1[i] - p.position0());
+            dxMag = max(dxMag, mag(dx));
+            dxMax = max(dxMax, cmptMag(dx));
             ++i;
         }
     }
     reduce(dMax, maxOp<scalar>());
-    reduce(dxMax, maxOp<scalar>());
+    reduce(dxMag, maxOp<scalar>());
+    reduce(dxMax, maxOp<vector>());
 
     const bool release = encounterRelease_ >= 0;
-    const scalar distance =
-        max(dMax + 2*dxMax, (release ? 1 + encounterRelease_ : 1)*dMax);
+    const scalar dReach = (release ? 1 + encounterRelease_ : 1)*dMax;
+    const scalar distance = max(dMax + 2*dxMag, dReach);
 
-    if (distance > 0.5*minPeriod_)
-    {
-        FatalErrorInFunction
-            << "Cloud " << cloud.name() << ": the collision search distance"
-            << " d_max + 2 max|dx| = " << distance << " m (d_max " << dMax
-            << " m, largest displacement in the step " << dxMax << " m)"
-            << " exceeds half the shortest periodic length, "
-            << 0.5*minPeriod_ << " m: the pair search misses partners"
-            << " through a second periodic image beyond it (found by the"
-            << " O(N^2) oracle). Reduce the time step (or enlarge the"
-            << " periodic domain)" << exit(FatalError);
-    }
+    checkReach(dMax, dxMag, dxMax, dReach);
 
 
     // Candidate events

@@ -30,6 +30,78 @@ Description
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::setPeriods()
+{
+    period_ = vector(GREAT, GREAT, GREAT);
+    for (const polyPatch& pp : this->owner().mesh().boundaryMesh())
+    {
+        const cyclicPolyPatch* cycPtr = isA<cyclicPolyPatch>(pp);
+        if (cycPtr && cycPtr->separated())
+        {
+            const vector& s = cycPtr->separation()[0];
+            const scalar L = mag(s);
+            label nAxes = 0;
+            direction axis = 0;
+            for (direction c = 0; c < vector::nComponents; ++c)
+            {
+                if (mag(s[c]) > 1e-6*L)
+                {
+                    ++nAxes;
+                    axis = c;
+                }
+            }
+            for (direction c = 0; c < vector::nComponents; ++c)
+            {
+                if (nAxes > 1 || c == axis)
+                {
+                    period_[c] = min(period_[c], L);
+                }
+            }
+        }
+    }
+    reduce(period_, minOp<vector>());
+}
+
+
+template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::checkReach
+(
+    const scalar dMax,
+    const scalar dxMag,
+    const vector& dxMax,
+    const scalar dReach
+) const
+{
+    const scalar distance = max(dMax + 2*dxMag, dReach);
+
+    // The reach of the search along each axis against half the period:
+    // the swept boxes (particleGrid, bruteForce) reach d_max + 2 max|dx_c|
+    // along axis c; InteractionLists' search distance is isotropic
+    for (direction c = 0; c < vector::nComponents; ++c)
+    {
+        const scalar reach =
+            ilSearch_.valid() ? distance : max(dMax + 2*dxMax[c], dReach);
+        if (reach > 0.5*period_[c])
+        {
+            FatalErrorInFunction
+                << "Cloud " << this->owner().name() << ": the collision search"
+                << " reaches " << reach << " m along "
+                << vector::componentNames[c] << " (d_max " << dMax
+                << " m, largest displacement in the step "
+                << (ilSearch_.valid() ? dxMag : dxMax[c]) << " m"
+                << (ilSearch_.valid() ? ", isotropic search" : "")
+                << "), more than half the periodic length along "
+                << vector::componentNames[c] << ", " << 0.5*period_[c]
+                << " m: the pair search would miss partners through a"
+                << " second periodic image beyond it (found by the O(N^2)"
+                << " oracle). Reduce the time step (or enlarge the"
+                << " periodic domain)" << exit(FatalError);
+        }
+    }
+}
+
+
+template<class CloudType>
 template<class Search>
 void Foam::HardSphereCollision<CloudType>::candidateKeys
 (

@@ -33,30 +33,12 @@ License
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class ParcelType>
-inline Foam::scalar Foam::ParticleGridPairSearch<ParcelType>::distSqr
-(
-    const point& x,
-    const boundBox& bb
-)
-{
-    scalar d2 = 0;
-    for (direction c = 0; c < 3; ++c)
-    {
-        const scalar e =
-            max(max(bb.min()[c] - x[c], x[c] - bb.max()[c]), scalar(0));
-        d2 += e*e;
-    }
-    return d2;
-}
-
-
-template<class ParcelType>
 void Foam::ParticleGridPairSearch<ParcelType>::refer
 (
     const UList<ParcelType*>& parcels,
     const UList<point>& x1,
-    const UList<scalar>& diag,
-    const scalar diagMax
+    const UList<boundBox>& boxes,
+    const vector& spanMax
 )
 {
     const label me = Pstream::myProcNo();
@@ -68,13 +50,12 @@ void Foam::ParticleGridPairSearch<ParcelType>::refer
     referred_.clear();
     referredX1_.clear();
 
-    // The (processor, shift) targets within reach of this box: a particle
-    // refers at most 2 diagMax from its end position
-    const scalar reach = 2*diagMax;
+    // The (processor, shift) targets within reach of this box: a box
+    // reaches at most spanMax from its end position, the partner's too
+    const vector r3(2*spanMax);
     DynamicList<label> targetProc;
     DynamicList<label> targetShift;
     bool interiorFree = true;
-    const vector r3(reach, reach, reach);
     const vector i3(1.01*r3 + 1e-9*own.span());
     const boundBox interior(own.min() + i3, own.max() - i3);
 
@@ -122,17 +103,25 @@ void Foam::ParticleGridPairSearch<ParcelType>::refer
         {
             continue;
         }
-        const scalar crit2 = sqr(diag[i] + diagMax);
-
         forAll(targetProc, t)
         {
             const label k = targetProc[t];
             const vector& s = shifts_[targetShift[t]];
-            const point xs(x + s);
-            if (distSqr(xs, procBb_[k]) > crit2)
+            const boundBox reachK
+            (
+                procBb_[k].min() - spanMax, procBb_[k].max() + spanMax
+            );
+            if
+            (
+                !sweptBoxGrid::overlap
+                (
+                    reachK, boundBox(boxes[i].min() + s, boxes[i].max() + s)
+                )
+            )
             {
                 continue;
             }
+            const point xs(x + s);
 
             ParcelType* copy = new ParcelType(*parcels[i]);
             copy->transformProperties(s);
@@ -255,10 +244,9 @@ void Foam::ParticleGridPairSearch<ParcelType>::search
 {
     const label n = parcels.size();
 
-    // Swept boxes of the real particles and their diagonals
+    // Swept boxes of the real particles and their largest span
     List<boundBox> boxes(n);
-    scalarList diag(n);
-    scalar diagMax = 0;
+    vector spanMax(Zero);
     forAll(parcels, i)
     {
         const ParcelType& p = *parcels[i];
@@ -266,12 +254,11 @@ void Foam::ParticleGridPairSearch<ParcelType>::search
         (
             p.position0(), x1[i], 0.5*inflate*p.d()
         );
-        diag[i] = mag(boxes[i].span());
-        diagMax = max(diagMax, diag[i]);
+        spanMax = max(spanMax, boxes[i].span());
     }
-    reduce(diagMax, maxOp<scalar>());
+    reduce(spanMax, maxOp<vector>());
 
-    refer(parcels, x1, diag, diagMax);
+    refer(parcels, x1, boxes, spanMax);
 
     // The referred partners' boxes (their start positions are shifted
     // with them)
