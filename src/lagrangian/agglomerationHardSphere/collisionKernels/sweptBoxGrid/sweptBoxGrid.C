@@ -95,20 +95,22 @@ void Foam::sweptBoxGrid::build
     }
     origin_ = lo;
 
-    // Bin ranges and number of insertions
-    label nInsert = 0;
-    List<FixedList<label, 6>> range(n);
-    forAll(boxes_, i)
+    // Bin range of a box (computed in each pass rather than stored)
+    FixedList<label, 6> r;
+    auto binRange = [&](const label i)
     {
-        FixedList<label, 6>& r = range[i];
-        label m = 1;
         for (direction c = 0; c < 3; ++c)
         {
             r[c] = index(boxes_[i].min()[c], c);
             r[c + 3] = index(boxes_[i].max()[c], c);
-            m *= r[c + 3] - r[c] + 1;
         }
-        nInsert += m;
+    };
+
+    label nInsert = 0;
+    forAll(boxes_, i)
+    {
+        binRange(i);
+        nInsert += (r[3] - r[0] + 1)*(r[4] - r[1] + 1)*(r[5] - r[2] + 1);
     }
 
     // Buckets: a power of 2 >= the number of insertions
@@ -120,35 +122,37 @@ void Foam::sweptBoxGrid::build
     mask_ = (uint64_t(1) << bits) - 1;
     const label nBuckets = label(1) << bits;
 
-    // Counting sort of the insertions by bucket: count, then place (items
-    // ascend within a bucket)
+    // Counting sort of the insertions by bucket: count (start_[b] = the
+    // end of bucket b after the running sum), then place backwards from
+    // the ends, so that the items ascend within a bucket and start_[b]
+    // ends at the start of bucket b
     start_.setSize(nBuckets + 1);
     start_ = 0;
     forAll(boxes_, i)
     {
-        const FixedList<label, 6>& r = range[i];
+        binRange(i);
         for (label bi = r[0]; bi <= r[3]; ++bi)
         {
             for (label bj = r[1]; bj <= r[4]; ++bj)
             {
                 for (label bk = r[2]; bk <= r[5]; ++bk)
                 {
-                    ++start_[bucket(key(bi, bj, bk)) + 1];
+                    ++start_[bucket(key(bi, bj, bk))];
                 }
             }
         }
     }
-    for (label b = 0; b < nBuckets; ++b)
+    for (label b = 1; b < nBuckets; ++b)
     {
-        start_[b + 1] += start_[b];
+        start_[b] += start_[b - 1];
     }
+    start_[nBuckets] = nInsert;
 
-    labelList fill(SubList<label>(start_, nBuckets));
     items_.setSize(nInsert);
     itemKey_.setSize(nInsert);
-    forAll(boxes_, i)
+    for (label i = n - 1; i >= 0; --i)
     {
-        const FixedList<label, 6>& r = range[i];
+        binRange(i);
         for (label bi = r[0]; bi <= r[3]; ++bi)
         {
             for (label bj = r[1]; bj <= r[4]; ++bj)
@@ -156,7 +160,7 @@ void Foam::sweptBoxGrid::build
                 for (label bk = r[2]; bk <= r[5]; ++bk)
                 {
                     const uint64_t k = key(bi, bj, bk);
-                    const label pos = fill[bucket(k)]++;
+                    const label pos = --start_[bucket(k)];
                     items_[pos] = i;
                     itemKey_[pos] = k;
                 }
