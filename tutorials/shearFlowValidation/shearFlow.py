@@ -377,6 +377,18 @@ def post(preset, runs_dir=None, out_dir=None):
                             f"{band[0]:.2f}-{band[1]:.2f}",
                             band[0] <= info["alpha_first_over_alpha_th"]
                             <= band[1], nr=band_nr))
+            # The same against the binomial noise of the run's own first
+            # contacts, under alpha = alpha_th: n/r while 3 sigma reaches 0
+            nf = info["N_col_first"]
+            sig = (math.sqrt((1 - a_th) / (a_th * nf)) if nf > 0
+                   else math.inf)
+            info["alpha_first_sigma_rel"] = sig
+            ratio = info["alpha_first_over_alpha_th"]
+            rows.append(row(f"{name}: alpha/alpha_th (first) within 3 sigma",
+                            ratio, 1.0, 3 * sig, abs(ratio - 1) <= 3 * sig,
+                            nr=(f"3 sigma_alpha/alpha = {3 * sig:.2f} with "
+                                f"{nf:.0f} first contacts reaches 0"
+                                if 3 * sig >= 1 else None)))
             rows.append(row(f"{name}: max |Np/Np0 - theory(own K)|/theory"
                             " consistent", info["Np_max_deviation_"
                                                 "consistent"],
