@@ -315,10 +315,10 @@ void Foam::HardSphereCollision<CloudType>::collide()
     reduce(dxMax, maxOp<vector>());
 
     const bool release = encounterRelease_ >= 0;
-    const scalar dReach = (release ? 1 + encounterRelease_ : 1)*dMax;
-    const scalar distance = max(dMax + 2*dxMag, dReach);
-
-    checkReach(dMax, dxMag, dxMax, dReach);
+    const scalar distance = checkedDistance
+    (
+        dMax, dxMag, dxMax, (release ? 1 + encounterRelease_ : 1)*dMax
+    );
 
 
     // Candidate events

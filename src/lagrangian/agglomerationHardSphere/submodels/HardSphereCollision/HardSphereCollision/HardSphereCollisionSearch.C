@@ -64,7 +64,7 @@ void Foam::HardSphereCollision<CloudType>::setPeriods()
 
 
 template<class CloudType>
-void Foam::HardSphereCollision<CloudType>::checkReach
+Foam::scalar Foam::HardSphereCollision<CloudType>::checkedDistance
 (
     const scalar dMax,
     const scalar dxMag,
@@ -98,6 +98,8 @@ void Foam::HardSphereCollision<CloudType>::checkReach
                 << " periodic domain)" << exit(FatalError);
         }
     }
+
+    return distance;
 }
 
 
