@@ -195,3 +195,138 @@ def test_restart_reproduces_the_agglomeration_stage(smoke_runs, tmp_path):
                                        / m / f)
             np.testing.assert_allclose(y, x, rtol=1e-12, atol=1e-15,
                                        err_msg=f"{m} {f}")
+
+
+# ----------------------------------------------------------- the release
+
+def _channel_module():
+    sys.path.insert(0, str(TUTORIAL))
+    import channel
+    return channel
+
+
+def _brute_overlaps(x, dmin, Lx, Lz):
+    """Oracle: every pair, minimum image in x and z."""
+    r = x[:, None, :] - x[None, :, :]
+    r[..., 0] -= Lx * np.round(r[..., 0] / Lx)
+    r[..., 2] -= Lz * np.round(r[..., 2] / Lz)
+    close = np.einsum("ijk,ijk->ij", r, r) < dmin**2
+    i, j = np.nonzero(np.triu(close, 1))
+    return np.unique(np.maximum(i, j))
+
+
+@pytest.mark.parametrize("dmin", [2e-4, 1e-3, 3e-3])
+def test_release_overlap_search_matches_brute_force(dmin):
+    """The vectorised grid search of the release finds exactly the
+    overlapping pairs of the O(N^2) oracle, across the periodic planes
+    and for a query subset, at one to many particles per cell."""
+    ch = _channel_module()
+    Lx, Ly, Lz = 2 * math.pi * 0.02, 0.04, math.pi * 0.02
+    rng = np.random.default_rng(7)
+    x = rng.uniform((0, 0, 0), (Lx, Ly, Lz), (2500, 3))
+    # pairs 0.4 dmin apart across the periodic planes x = 0 and z = 0
+    x[20:40] = x[:20]
+    x[:20, 0], x[20:40, 0] = 0.2 * dmin, Lx - 0.2 * dmin
+    x[60:80] = x[40:60]
+    x[40:60, 2], x[60:80, 2] = 0.2 * dmin, Lz - 0.2 * dmin
+    # a cluster: many particles per cell
+    x[100:300] = [Lx / 2, Ly / 2, Lz / 2] + rng.uniform(-2, 2, (200, 3)) \
+        * dmin
+    ref = _brute_overlaps(x, dmin, Lx, Lz)
+    assert set(range(20, 40)) | set(range(60, 80)) <= set(ref)
+    assert len(ref) > 100
+    assert np.array_equal(ch._overlaps(x, dmin, Lx, Lz), ref)
+    # a query subset: the pairs that involve at least one queried particle
+    q = np.arange(0, 2500, 3)
+    r = x[:, None, :] - x[None, q, :]
+    r[..., 0] -= Lx * np.round(r[..., 0] / Lx)
+    r[..., 2] -= Lz * np.round(r[..., 2] / Lz)
+    i, k = np.nonzero(np.einsum("ijk,ijk->ij", r, r) < dmin**2)
+    ok = i != q[k]
+    want = np.unique(np.maximum(i[ok], q[k][ok]))
+    assert np.array_equal(ch._overlaps(x, dmin, Lx, Lz, q), want)
+
+
+def test_release_places_without_overlap():
+    """place(): no two centres closer than 1.001 d (oracle), every centre
+    inside the walls' clearance, the same positions for the same seed."""
+    ch = _channel_module()
+    L = (2 * math.pi * 0.02, 0.04, math.pi * 0.02)
+    dp = 1e-3               # dense: about 30 % of the first draws overlap
+    a = ch.place(3000, dp, L, np.random.default_rng(3))
+    b = ch.place(3000, dp, L, np.random.default_rng(3))
+    assert np.array_equal(a, b)
+    assert len(_brute_overlaps(a, dp * 1.001, L[0], L[2])) == 0
+    assert len(_brute_overlaps(
+        np.random.default_rng(3).uniform(0, 1, (3000, 3)) * L,
+        dp * 1.001, L[0], L[2])) > 50
+    assert a[:, 1].min() >= dp / 2 * 1.001
+    assert a[:, 1].max() <= L[1] - dp / 2 * 1.001
+
+
+def test_release_into_processors_is_the_serial_release(smoke_runs):
+    """On 2 ranks the particles are written straight into the processor
+    folders (no decomposePar): together the same particles and ids as the
+    serial release, each on the rank whose cells hold it (its z inside
+    that rank's slab of the mesh), with the velocity of the 2-rank run's
+    own fluid (the LES on 2 ranks differs by round-off) at its cell."""
+    def released(root, t):
+        c = root / t / "lagrangian/particles"
+        return (foamio.read_lagrangian(c / "origId").astype(int),
+                foamio.read_positions(c / "positions"),
+                foamio.read_lagrangian(c / "U"))
+    s = smoke_runs[1] / "runs/smoke/C1/dispersion"
+    p = smoke_runs[2] / "runs/smoke/C1/dispersion"
+    t = foamio.time_dirs(s)[0].name
+    ids, x, U = released(s, t)
+    assert np.array_equal(ids, np.arange(N_RELEASED))
+    assert not (p / "log.decomposePar").exists()
+    got = {}
+    for proc in sorted(p.glob("processor*")):
+        i, xp, up = released(proc, t)
+        assert 0 < len(i) < N_RELEASED
+        z = foamio.read_lagrangian(proc / "constant/polyMesh/points")[:, 2]
+        assert np.all((xp[:, 2] >= z.min()) & (xp[:, 2] <= z.max()))
+        got.update({k: (a, b) for k, a, b in zip(i, xp, up)})
+    assert sorted(got) == list(range(N_RELEASED))
+    assert np.array_equal(np.array([got[k][0] for k in ids]), x)
+    ch = _channel_module()
+    grid = ch.Grid(foamio.read_internal(p / t / "C"), (16, 16, 16))
+    Uf = foamio.read_internal(p / t / "U")
+    assert np.array_equal(np.array([got[k][1] for k in ids]),
+                          Uf[grid.cell(x)])
+    assert not np.array_equal(Uf[grid.cell(x)], U)      # a different LES
+
+
+def test_binary_files_read_as_ascii(smoke_runs, tmp_path):
+    """The readers give the same numbers from OpenFOAM's binary files
+    (foamFormatConvert of a finished agglomeration case: lagrangian
+    fields, a volume field, points, cellProcAddressing) as from ASCII."""
+    from conftest import foam_bin, run
+    src = agg_runs(smoke_runs[2])[("C1", "EAM")]
+    case = tmp_path / "binary"
+    shutil.copytree(src, case, ignore=shutil.ignore_patterns(
+        "VTK", "processor1", "postProcessing"))
+    cd = case / "system/controlDict"
+    cd.write_text(cd.read_text().replace("$writeFormat", "binary"))
+    t = foamio.time_dirs(case)[-1].name
+    run([foam_bin("foamFormatConvert"), "-time", t], case, "log.convert")
+    # (not origId: foamFormatConvert of v1912 writes it as -1)
+    files = ["lagrangian/EAM/" + f for f in ("U", "d", "nPrimary",
+                                             "lastPartnerId", "active")]
+    for f in files:
+        assert b"format      binary" in (case / t / f).read_bytes()[:2000]
+        a = foamio.read_lagrangian(src / t / f)
+        b = foamio.read_lagrangian(case / t / f)
+        assert a.shape == b.shape and np.array_equal(a, b), f
+    assert np.array_equal(foamio.read_internal(src / t / "U"),
+                          foamio.read_internal(case / t / "U"))
+    pc = case / "processor0"
+    shutil.copytree(case / "system", pc / "system")
+    run([foam_bin("foamFormatConvert"), "-case", str(pc), "-constant"],
+        case, "log.convert0")
+    for f in ("constant/polyMesh/points",
+              "constant/polyMesh/cellProcAddressing"):
+        assert b"format      binary" in (pc / f).read_bytes()[:2000]
+        assert np.array_equal(foamio.read_lagrangian(pc / f),
+                              foamio.read_lagrangian(src / "processor0" / f))

@@ -1,6 +1,7 @@
-"""Minimal OpenFOAM file input/output for the tutorials (ASCII only):
-flat dictionaries, volume-field internal values, lagrangian fields of a
-cloud, and the stats.dat of a hard-sphere cloud."""
+"""Minimal OpenFOAM file input/output for the tutorials: flat
+dictionaries, volume-field internal values and lagrangian fields (read in
+ASCII or binary, written in ASCII), and the stats.dat of a hard-sphere
+cloud."""
 
 import re
 import shutil
@@ -94,10 +95,45 @@ def _vec(v):
     return "(" + " ".join(repr(float(c)) for c in v) + ")"
 
 
+def _binary_arch(head):
+    """(label dtype, scalar dtype) of a binary file's FoamFile header."""
+    m = re.search(rb"arch\s+\"([^\"]*)\"", head)
+    arch = m.group(1).decode() if m else "LSB;label=32;scalar=64"
+    order = ">" if arch.startswith("MSB") else "<"
+    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
+    return (np.dtype(f"{order}i{int(bits.get('label', 32)) // 8}"),
+            np.dtype(f"{order}f{int(bits.get('scalar', 64)) // 8}"))
+
+
+def _is_binary(head):
+    return re.search(rb"format\s+binary\s*;", head) is not None
+
+
+def _binary_list(data, pos, kind, head):
+    """The binary list whose count starts at data[pos:] (`N\n(` raw bytes
+    `)`): a numpy array ((n,) or (n, 3)) and the offset after it."""
+    m = re.compile(rb"\s*(\d+)\s*\(").match(data, pos)
+    n = int(m.group(1))
+    label, scalar = _binary_arch(head)
+    dt, ncomp = {"label": (label, 1), "scalar": (scalar, 1),
+                 "vector": (scalar, 3)}[kind]
+    a = np.frombuffer(data, dt, n * ncomp, m.end())
+    end = m.end() + a.nbytes
+    if data[end:end + 1] != b")":
+        raise ValueError("malformed binary list")
+    a = a.astype(np.int64 if kind == "label" else float)
+    return (a.reshape(n, 3) if ncomp == 3 else a), end + 1
+
+
 def read_internal(path):
-    """internalField of an ASCII volume field as an array ((n,) or (n, 3);
-    a uniform value as one value)."""
-    text = Path(path).read_text()
+    """internalField of a volume field (ASCII or binary) as an array ((n,)
+    or (n, 3); a uniform value as one value)."""
+    data = Path(path).read_bytes()
+    head = data[:data.index(b"}") + 1]
+    m = re.search(rb"internalField\s+nonuniform\s+List<(\w+)>\s*", data)
+    if m and _is_binary(head):
+        return _binary_list(data, m.end(), m.group(1).decode(), head)[0]
+    text = data.decode()
     m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(",
                   text)
     if not m:
@@ -106,8 +142,9 @@ def read_internal(path):
     n = int(m.group(2))
     body = text[m.end():]
     if m.group(1) == "vector":
-        flat = np.array(re.findall(r"[-+0-9.eE]+",
-                                   body[:body.index("\n)")]), float)
+        inner = body[:body.index("\n)")]
+        flat = np.array(inner.replace("(", " ").replace(")", " ").split(),
+                        float)
         return flat.reshape(n, 3)
     return np.array(body[:body.index("\n)")].split(), float)
 
@@ -125,11 +162,26 @@ def set_internal_vector_field(path, values):
     path.write_text(text)
 
 
+def _list_body(a, fmt):
+    """ASCII list body of a (n,) or (n, 3) array: `N{value}` when every
+    entry is the same (OpenFOAM reads it as a uniform list), else `N(...)`
+    with one entry per line formatted by fmt (%.17g: exact)."""
+    a = np.asarray(a)
+    n = len(a)
+    row = fmt if a.ndim == 1 else "(" + " ".join([fmt] * a.shape[1]) + ")"
+    if n > 1 and (a == a[0]).all():
+        return f"{n}{{{row % tuple(np.atleast_1d(a[0]).tolist())}}}"
+    body = (row + "\n") * n % tuple(a.ravel().tolist())
+    return f"{n}\n(\n{body})"
+
+
 def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
-                cloud="kinematicCloud", time="0", ids=None):
+                cloud="kinematicCloud", time="0", ids=None, count=None):
     """Write a complete initial cloud (one particle per parcel) for the
-    basicAgglomerateParcel: the legacy positions file plus every field,
-    with origProcId 0 and origId 0..N-1 (decomposition-independent ids)."""
+    basicAgglomerateParcel: the legacy positions file (cell -1: located on
+    reading) plus every field, with origProcId 0 and origId 0..N-1 or ids
+    (decomposition-independent ids); count (default: the largest id + 1)
+    is the particleCount from which new particles are numbered."""
     loc = f"{time}/lagrangian/{cloud}"
     out = Path(case) / loc
     x = np.asarray(positions, float)
@@ -142,40 +194,64 @@ def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
     n_primary = (np.ones(N, int) if n_primary is None
                  else np.asarray(n_primary, int))
     ids = np.arange(N) if ids is None else np.asarray(ids, int)
+    if count is None:
+        count = int(ids.max()) + 1 if N else 0
 
-    def field(name, cls, lines):
-        write_foamfile(out / name, cls, loc, name,
-                       f"{N}\n(\n" + "\n".join(lines) + "\n)")
+    def field(name, cls, a, fmt="%.17g"):
+        write_foamfile(out / name, cls, loc, name, _list_body(a, fmt))
 
-    vec = lambda a: ["(%.17g %.17g %.17g)" % tuple(r) for r in a]
-    sca = lambda a: ["%.17g" % v for v in a]
-    lab = lambda a: ["%d" % v for v in a]
-    field("positions", "Cloud<basicAgglomerateParcel>",
-          [s + " -1" for s in vec(x)])
-    field("origProcId", "labelField", lab(np.zeros(N, int)))
-    field("origId", "labelField", lab(ids))
-    field("active", "labelField", lab(np.ones(N, int)))
-    field("typeId", "labelField", lab(np.zeros(N, int)))
-    field("nParticle", "scalarField", sca(np.ones(N)))
-    field("d", "scalarField", sca(d))
-    field("dTarget", "scalarField", sca(d))
-    field("rho", "scalarField", sca(rho))
-    field("age", "scalarField", sca(np.zeros(N)))
-    field("tTurb", "scalarField", sca(np.zeros(N)))
-    field("U", "vectorField", vec(U))
-    field("UTurb", "vectorField", vec(zeros))
-    field("omega", "vectorField", vec(omega))
-    field("nPrimary", "labelField", lab(n_primary))
+    write_foamfile(out / "positions", "Cloud<basicAgglomerateParcel>", loc,
+                   "positions",
+                   f"{N}\n(\n" + "(%.17g %.17g %.17g) -1\n" * N
+                   % tuple(x.ravel().tolist()) + ")")
+    field("origProcId", "labelField", np.zeros(N, int), "%d")
+    field("origId", "labelField", ids, "%d")
+    field("active", "labelField", np.ones(N, int), "%d")
+    field("typeId", "labelField", np.zeros(N, int), "%d")
+    field("nParticle", "scalarField", np.ones(N))
+    field("d", "scalarField", d)
+    field("dTarget", "scalarField", d)
+    field("rho", "scalarField", rho)
+    field("age", "scalarField", np.zeros(N))
+    field("tTurb", "scalarField", np.zeros(N))
+    field("U", "vectorField", U)
+    field("UTurb", "vectorField", zeros)
+    field("omega", "vectorField", omega)
+    field("nPrimary", "labelField", n_primary, "%d")
     write_foamfile(Path(case) / time / "uniform" / "lagrangian" / cloud
                    / "cloudProperties", "dictionary",
                    f"{time}/uniform/lagrangian/{cloud}", "cloudProperties",
                    f"geometry positions;\nprocessor0 {{ particleCount "
-                   f"{int(ids.max()) + 1 if N else 0}; }}")
+                   f"{count}; }}")
 
 
 def read_lagrangian(path):
-    """An ASCII lagrangian IOField as a numpy array ((n,) or (n, 3))."""
-    text = Path(path).read_text()
+    """A lagrangian IOField or a plain list file (labelList, vectorField:
+    cellProcAddressing, points), ASCII or binary, as a numpy array ((n,)
+    or (n, 3))."""
+    data = Path(path).read_bytes()
+    hend = data.index(b"}") + 1
+    head = data[:hend]
+    if _is_binary(head):
+        cls = re.search(rb"class\s+(\S+);", head).group(1).decode()
+        kind = ("vector" if "vector" in cls.lower() else
+                "label" if "label" in cls.lower() else "scalar")
+        body = re.compile(rb"(\s|//[^\n]*)*").match(data, hend).end()
+        m = re.compile(rb"(\d+)\s*\{").match(data, body)
+        if m:  # uniform list N{raw value}
+            label, scalar = _binary_arch(head)
+            dt = label if kind == "label" else scalar
+            v = np.frombuffer(data, dt, 3 if kind == "vector" else 1,
+                              m.end()).astype(float)
+            n = int(m.group(1))
+            if kind == "vector":
+                return np.tile(v, (n, 1))
+            return np.full(n, v[0])
+        return _binary_list(data, body, kind, head)[0]
+    return _read_lagrangian_text(data.decode())
+
+
+def _read_lagrangian_text(text):
     body = _strip_comments(text[text.index("}") + 1:])
     m = re.search(r"(\d+)\s*\{([^}]*)\}", body)
     if m:  # uniform list N{value}
@@ -189,9 +265,10 @@ def read_lagrangian(path):
         return np.zeros(0)
     inner = m.group(2)
     if "(" in inner:
-        rows = re.findall(r"\(([^()]*)\)", inner)
-        return np.array([[float(c) for c in r.split()] for r in rows])
-    return np.array([float(c) for c in inner.split()])
+        flat = np.array(inner.replace("(", " ").replace(")", " ").split(),
+                        float)
+        return flat.reshape(-1, 3)
+    return np.array(inner.split(), float)
 
 
 def read_positions(path):

@@ -10,7 +10,9 @@
                                   at its latest time: seeded uniform random
                                   non-overlapping positions at least d/2
                                   from the walls, the local fluid velocity,
-                                  no spin, ids 0..N-1 (doc/cases.md A.1)
+                                  no spin, ids 0..N-1 (doc/cases.md A.1);
+                                  into the processor folders of a
+                                  decomposed case (no decomposePar)
     channel.py seedPairs CASE CLOUD ...
                                   the seeded pairs of the smoke preset
                                   (doc/cases.md A.11) at the latest time
@@ -31,7 +33,7 @@ import math
 import os
 import re
 import sys
-import time
+import time as time_module
 from pathlib import Path
 
 import numpy as np
@@ -58,7 +60,8 @@ def _nums(v):
 
 
 COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
-               "ddtScheme", "seed"}
+               "ddtScheme", "seed", "writeFormat", "writePositions",
+               "purgeWrite"}
 PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "unladen", "release", "dispersion", "agglomeration", "window",
                "writeStar", "profileBins", "seededPairs"} | COMMON_KEYS
@@ -94,6 +97,15 @@ def preset(name):
     p["tScale"] = p["delta"] / p["Ubar"]            # delta/U_B [s]
     p["deltaT"] = p["dtStar"] * p["tScale"]
     p["L"] = (2 * PI * p["delta"], 2 * p["delta"], PI * p["delta"])
+    choices = {"writeFormat": ("ascii", "binary"),
+               "writePositions": ("on", "off")}
+    for key, valid in choices.items():
+        if p[key] not in valid:
+            sys.exit(f"channel.py: presets/{name}: {key} '{p[key]}' is not"
+                     f" one of: " + " ".join(valid))
+    if not isinstance(p["purgeWrite"], int) or p["purgeWrite"] < 0:
+        sys.exit(f"channel.py: presets/{name}: purgeWrite '{p['purgeWrite']}'"
+                 " must be an integer >= 0 (0 keeps every write)")
     return p
 
 
@@ -191,6 +203,9 @@ yGradingInv     {1 / p['yGrading']:.10g};
 deltaT          {p['deltaT']:.10g};
 endTime         {end_time(p, stage):.10g};
 writeSteps      {write_steps};
+writeFormat     {p['writeFormat']};
+purgeWrite      {p['purgeWrite']};      // keep the last N writes (0: all)
+writePositions  {1 if p['writePositions'] == 'on' else 0};  // legacy positions too
 ddtScheme       {p['ddtScheme']};
 
 // Flow (Re_b = 11900)
@@ -223,8 +238,9 @@ clouds          {clouds};
 
 SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
                  "ny", "nz", "yGrading", "yGradingInv", "deltaT", "endTime",
-                 "writeSteps", "ddtScheme", "Ubar", "nProcs", "dParticle",
-                 "nParticles", "seed", "subModels", "coupled",
+                 "writeSteps", "writeFormat", "purgeWrite",
+                 "writePositions", "ddtScheme", "Ubar", "nProcs",
+                 "dParticle", "nParticles", "seed", "subModels", "coupled",
                  "couplingScale", "cloudForces", "dispersionModel",
                  "enParticle", "wallType", "wallCoeffs", "profileBins",
                  "clouds"}
@@ -306,43 +322,95 @@ def init(case):
 
 # ----------------------------------------------------------------- release
 
-def _overlaps(x, dmin, Lx, Lz):
-    """Indices of particles closer than dmin to another, periodic in x
-    (period Lx) and z (Lz): grid hashing with cells of at least dmin that
-    tile the periods, minimum-image distances."""
-    nx, nz = max(1, int(Lx // dmin)), max(1, int(Lz // dmin))
-    h = np.array([Lx / nx, dmin, Lz / nz])
-    ijk = np.floor(x / h).astype(np.int64)
-    ijk[:, 0] %= nx
-    ijk[:, 2] %= nz
-    ijk[:, 1] -= ijk[:, 1].min()
-    ny = ijk[:, 1].max() + 3
-    key = ijk[:, 0] + nx * (ijk[:, 1] + ny * ijk[:, 2])
+def _overlaps(x, dmin, Lx, Lz, query=None):
+    """Sorted indices max(i, j) of the pairs closer than dmin, periodic in
+    x (period Lx) and z (Lz) by minimum image, among the pairs with i in
+    query (default: all particles). Vectorised grid search: cells of at
+    least dmin (about one particle per cell) that tile the periods, the
+    particles counting-sorted by cell, the 27 neighbour cells of every
+    queried particle looked up directly."""
+    n = len(x)
+    q = np.arange(n) if query is None else np.asarray(query, np.int64)
+    h = max(dmin, (Lx * np.ptp(x[:, 1]) * Lz / max(n, 1))**(1 / 3))
+    nx, nz = max(1, int(Lx // h)), max(1, int(Lz // h))
+    y0 = x[:, 1].min()
+    ny = int((x[:, 1].max() - y0) // h) + 1
+    i = np.floor(x[:, 0] / (Lx / nx)).astype(np.int64) % nx
+    j = np.minimum(np.floor((x[:, 1] - y0) / h).astype(np.int64), ny - 1)
+    k = np.floor(x[:, 2] / (Lz / nz)).astype(np.int64) % nz
+    key = i + nx * (j + ny * k)
     order = np.argsort(key, kind="stable")
-    skey = key[order]
-    bad = set()
+    count = np.bincount(key, minlength=nx * ny * nz)
+    start = np.concatenate(([0], np.cumsum(count)[:-1]))
+    bad = []
     for a in (-1, 0, 1):
         for b in (-1, 0, 1):
+            jb = j[q] + b
+            inside = (jb >= 0) & (jb < ny)
             for c in (-1, 0, 1):
-                nk = ((ijk[:, 0] + a) % nx
-                      + nx * (ijk[:, 1] + b + ny * ((ijk[:, 2] + c) % nz)))
-                lo = np.searchsorted(skey, nk, "left")
-                hi = np.searchsorted(skey, nk, "right")
-                has = np.nonzero(hi > lo)[0]
-                for m in range(int((hi - lo).max(initial=0))):
-                    sel = has[lo[has] + m < hi[has]]
-                    j = order[lo[sel] + m]
-                    ok = j != sel
-                    sel, j = sel[ok], j[ok]
-                    r = x[sel] - x[j]
+                sel = q[inside]
+                nk = ((i[sel] + a) % nx
+                      + nx * (jb[inside] + ny * ((k[sel] + c) % nz)))
+                cnt, st = count[nk], start[nk]
+                for m in range(int(cnt.max(initial=0))):
+                    has = cnt > m
+                    sel, cnt, st = sel[has], cnt[has], st[has]
+                    other = order[st + m]
+                    ok = other != sel
+                    s1, o1 = sel[ok], other[ok]
+                    r = x[s1] - x[o1]
                     r[:, 0] -= Lx * np.round(r[:, 0] / Lx)
                     r[:, 2] -= Lz * np.round(r[:, 2] / Lz)
                     close = np.einsum("ij,ij->i", r, r) < dmin**2
-                    bad.update(np.maximum(sel[close], j[close]).tolist())
-    return np.array(sorted(bad), int)
+                    bad.append(np.maximum(s1[close], o1[close]))
+    return np.unique(np.concatenate(bad)) if bad else np.zeros(0, int)
+
+
+def place(N, dp, L, rng):
+    """N non-overlapping positions (centre distance at least 1.001 dp) in
+    the channel [0, Lx) x [dp/2 1.001, Ly - dp/2 1.001] x [0, Lz),
+    periodic in x and z: uniform random draws; of every overlapping pair
+    the particle of the higher index is drawn again, and only the redrawn
+    particles are checked again (the others do not overlap each other)."""
+    Lx, Ly, Lz = L
+    lo = np.array([0, dp / 2 * 1.001, 0])
+    hi = np.array([Lx, Ly - dp / 2 * 1.001, Lz])
+    x = rng.uniform(lo, hi, (N, 3))
+    query = None
+    for _ in range(100):
+        bad = _overlaps(x, dp * 1.001, Lx, Lz, query)
+        if not len(bad):
+            return x
+        x[bad] = rng.uniform(lo, hi, (len(bad), 3))
+        query = bad
+    sys.exit("channel.py release: could not place the particles")
+
+
+def mesh_lines(case):
+    """The face coordinates along x, y and z of the one-block blockMesh
+    grid (points ordered x fastest, then y, z)."""
+    pts = foamio.read_lagrangian(Path(case) / "constant/polyMesh/points")
+    s = read_settings(case)
+    nx, ny = int(s["nx"]), int(s["ny"])
+    return (pts[:nx + 1, 0], pts[:(nx + 1) * (ny + 1):nx + 1, 1],
+            pts[::(nx + 1) * (ny + 1), 2])
+
+
+def containing_cell(lines, x):
+    """Index of the cell that contains each position (x, y, z)."""
+    ijk = [np.clip(np.searchsorted(f, x[:, a], "right") - 1, 0, len(f) - 2)
+           for a, f in enumerate(lines)]
+    nx, ny = len(lines[0]) - 1, len(lines[1]) - 1
+    return ijk[0] + nx * (ijk[1] + ny * ijk[2])
 
 
 def release(case, time=None):
+    """Release the particles into the latest time (or time) of the case:
+    serially, or straight into the processor folders of a decomposed case
+    (each particle into the processor that holds its cell, with its
+    global id: the same particles as a serial release, and none goes
+    through decomposePar). A particle starts with the fluid velocity of
+    the cell whose centre is nearest along each axis."""
     case = Path(case)
     s = read_settings(case)
     p = preset(s["preset"])
@@ -353,23 +421,33 @@ def release(case, time=None):
     grid = Grid(C, p["n"])
     U = foamio.read_internal(case / time / "U")
     N, dp = int(p["nParticles"]), float(c["d"])
-    Lx, Ly, Lz = p["L"]
     rng = np.random.default_rng(int(p["seed"]) + 1000)
-    lo = np.array([0, dp / 2 * 1.001, 0])
-    hi = np.array([Lx, Ly - dp / 2 * 1.001, Lz])
-    x = rng.uniform(lo, hi, (N, 3))
-    for _ in range(100):
-        bad = _overlaps(x, dp * 1.001, Lx, Lz)
-        if not len(bad):
-            break
-        x[bad] = rng.uniform(lo, hi, (len(bad), 3))
-    else:
-        sys.exit("channel.py release: could not place the particles")
+    t0 = time_module.time()
+    x = place(N, dp, p["L"], rng)
+    t1 = time_module.time()
     Up = U[grid.cell(x)]
-    foamio.write_cloud(case, x, dp, p["rhoParticle"], U=Up,
-                       cloud="particles", time=time)
-    print(f"released {N} particles of {dp * 1e6:g} um at t = {time}"
-          f" ({len(x)} placed, seed {int(p['seed']) + 1000})")
+    procs = sorted(case.glob("processor[0-9]*"),
+                   key=lambda d: int(d.name[9:]))
+    if not procs:
+        foamio.write_cloud(case, x, dp, p["rhoParticle"], U=Up,
+                           cloud="particles", time=time)
+    else:
+        owner = np.empty(len(C), np.int64)
+        for rank, d in enumerate(procs):
+            owner[foamio.read_lagrangian(
+                d / "constant/polyMesh/cellProcAddressing").astype(
+                    np.int64)] = rank
+        rank = owner[containing_cell(mesh_lines(case), x)]
+        for r, d in enumerate(procs):
+            mine = np.nonzero(rank == r)[0]
+            foamio.write_cloud(d, x[mine], dp, p["rhoParticle"], U=Up[mine],
+                               cloud="particles", time=time, ids=mine,
+                               count=N)
+    t2 = time_module.time()
+    where = f" into {len(procs)} processor folders" if procs else ""
+    print(f"released {N} particles of {dp * 1e6:g} um at t = {time}{where}"
+          f" (seed {int(p['seed']) + 1000}): placed in {t1 - t0:.1f} s,"
+          f" written in {t2 - t1:.1f} s")
 
 
 # ------------------------------------------------------------ seeded pairs
