@@ -26,8 +26,9 @@ first and the last; the first carries the start-up, the last the write),
 the first step and the write, the cloud's own split (tracking, collision
 stage, rest; master rank) in us per particle-step, peak resident memory
 (all ranks) and per particle, disk per write, and the parallel efficiency
-t(1)/(n t(n)). On the 2-core development machine: smoke and small take
-about 2 min, medium about 10 min and paper about 40 min (README.md).
+t(1)/(n t(n)). On the 2-core development machine: small takes about 1
+min, medium about 6 min and paper about 50 min, 10 of them the stopped
+decomposePar (tutorials/verticalChannel/README.md has the figures).
 """
 
 import argparse
