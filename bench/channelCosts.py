@@ -143,24 +143,6 @@ def branch(src, dst, n):
     return t
 
 
-def two_clouds(case, t):
-    """The released cloud `particles` becomes the clouds EAM and MAM."""
-    for r in [case / t] + sorted(case.glob(f"processor*/{t}")):
-        src = r / "lagrangian/particles"
-        if not src.is_dir():
-            continue
-        for m in ("EAM", "MAM"):
-            shutil.copytree(src, r / "lagrangian" / m)
-            shutil.copytree(r / "uniform/lagrangian/particles",
-                            r / "uniform/lagrangian" / m)
-            for f in r.glob("particles:*"):
-                shutil.copy(f, r / f"{m}:{f.name.split(':', 1)[1]}")
-        shutil.rmtree(src)
-        shutil.rmtree(r / "uniform/lagrangian/particles")
-        for f in r.glob("particles:*"):
-            f.unlink()
-
-
 def step_times(case):
     """Per-step wall times from the solver log (ExecutionTime differences)
     and the cloud's split per step (rows: tracking, stage, rest)."""
@@ -259,7 +241,7 @@ def preset_costs(pname, nps, steps, dec_timeout):
               flush=True)
         l2 = base / f"laden2_np{n}"
         t = branch(l1, l2, n)
-        two_clouds(l2, t)
+        channel.branch_clouds(l2, t, ("EAM", "MAM"))
         settings(l2, pname, "agglomeration", steps, n, ("EAM", "MAM"))
         r["laden2"] = stage(l2, n, steps, N, 2)
         print(f"{pname} np{n} laden2: {r['laden2']['step_s']:.3g} s/step",

@@ -13,6 +13,9 @@
                                   no spin, ids 0..N-1 (doc/cases.md A.1);
                                   into the processor folders of a
                                   decomposed case (no decomposePar)
+    channel.py branchClouds CASE TIME MODEL ...
+                                  the released cloud becomes one cloud per
+                                  model (agglomeration stage branch)
     channel.py seedPairs CASE CLOUD ...
                                   the seeded pairs of the smoke preset
                                   (doc/cases.md A.11) at the latest time
@@ -32,6 +35,7 @@ import json
 import math
 import os
 import re
+import shutil
 import sys
 import time as time_module
 from pathlib import Path
@@ -450,6 +454,32 @@ def release(case, time=None):
           f" written in {t2 - t1:.1f} s")
 
 
+# ------------------------------------------------------------- branching
+
+def branch_clouds(case, time, models):
+    """Agglomeration branch: the released cloud `particles` of the time
+    (in the case and in each processor folder) becomes one cloud per
+    model with the same particles, cloudProperties and source fields; the
+    statistics state is not copied (the counters start from zero)."""
+    case = Path(case)
+    for r in [case / time] + sorted(case.glob(f"processor*/{time}")):
+        src = r / "lagrangian/particles"
+        if not src.is_dir():
+            continue
+        sources = sorted(r.glob("particles:*"))
+        for m in models:
+            shutil.copytree(src, r / "lagrangian" / m)
+            (r / "uniform/lagrangian" / m).mkdir(parents=True)
+            shutil.copy(r / "uniform/lagrangian/particles/cloudProperties",
+                        r / "uniform/lagrangian" / m)
+            for f in sources:
+                shutil.copy(f, r / f"{m}:{f.name.split(':', 1)[1]}")
+        shutil.rmtree(src)
+        shutil.rmtree(r / "uniform/lagrangian/particles")
+        for f in sources:
+            f.unlink()
+
+
 # ------------------------------------------------------------ seeded pairs
 
 def _field_class(path):
@@ -600,6 +630,8 @@ def main(argv):
         init(argv[2])
     elif cmd == "release":
         release(argv[2])
+    elif cmd == "branchClouds":
+        branch_clouds(argv[2], argv[3], argv[4:])
     elif cmd == "seedPairs":
         seed_pairs(argv[2], argv[3:])
     elif cmd == "progress":
