@@ -42,11 +42,12 @@ import threading
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+from aggloTools import times
+from aggloTools.runner import project_dir, tutorial_module
+
+ROOT = project_dir()
 TUTORIAL = ROOT / "tutorials" / "verticalChannel"
-sys.path.insert(0, str(TUTORIAL))
-import channel  # noqa: E402
-from aggloTools import foamio  # noqa: E402
+channel = tutorial_module("verticalChannel", "channel")
 
 OUT = ROOT / "bench" / "runs" / "channelCosts"
 STEPS = {"smoke": 60, "small": 40, "medium": 12, "paper": 6}
@@ -114,7 +115,7 @@ def settings(case, pname, stage, steps, n, models=()):
     time and writing at its end."""
     text = channel.settings(pname, "C1", stage, models, n)
     p = channel.preset(pname)
-    t0 = float(foamio.time_dirs(case)[-1].name)
+    t0 = float(times.time_dirs(case)[-1].name)
     text = re.sub(r"\nendTime\s+[^;]+;",
                   f"\nendTime         {t0 + steps * p['deltaT']:.10g};",
                   text)
@@ -128,7 +129,7 @@ def branch(src, dst, n):
     folders); returns the time name."""
     if dst.exists():
         shutil.rmtree(dst)
-    t = foamio.time_dirs(src)[-1].name
+    t = times.time_dirs(src)[-1].name
     roots = [Path()] + [Path(p.name) for p in src.glob("processor*")]
     for r in roots:
         (dst / r).mkdir(parents=True)
@@ -139,7 +140,7 @@ def branch(src, dst, n):
                           ignore_errors=True)
     shutil.copytree(src / "system", dst / "system")
     if n > 1:
-        t = foamio.time_dirs(dst / "processor0")[-1].name
+        t = times.time_dirs(dst / "processor0")[-1].name
     return t
 
 
@@ -164,7 +165,7 @@ def disk(path):
 
 def last_write_size(case):
     roots = [case] + sorted(case.glob("processor*"))
-    t = foamio.time_dirs(roots[-1])[-1].name
+    t = times.time_dirs(roots[-1])[-1].name
     return sum(disk(r / t) for r in roots if (r / t).is_dir())
 
 

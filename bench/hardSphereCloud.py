@@ -51,10 +51,10 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tests"))
+from aggloTools import boxcase
+from aggloTools.runner import project_dir
 
-import hscase  # noqa: E402
+ROOT = project_dir()
 
 N_DENSITY = 6e6 / (2 * math.pi * 2 * math.pi * 0.02**3)
 PER_CELL = 6e6 / 128**3
@@ -108,14 +108,14 @@ def make_case(case, N, density, search="particleGrid", particles=True):
         U = rng.normal(0, 0.5, (N, 3))
         parts = [dict(x=tuple(x), U=tuple(u), id=i)
                  for i, (x, u) in enumerate(zip(X, U))]
-    hscase.box_case(case, L=(Lb,) * 3, n=(nc,) * 3, kinds=("cyclic",) * 3,
-                    particles=parts, dt=DT, end_time=steps * DT,
-                    write_interval=10 * steps, agglomeration="EAM",
-                    forces="{ sphereDrag; gravity; }",
-                    gravity=(0, -9.81, 0), rotation=False,
-                    hard_sphere=hscase.KERNEL
-                    + f"    pairSearch {search};\n"
-                    + "    agglomerationModel EAM;\n    walls {}\n")
+    boxcase.box_case(case, L=(Lb,) * 3, n=(nc,) * 3, kinds=("cyclic",) * 3,
+                     particles=parts, dt=DT, end_time=steps * DT,
+                     write_interval=10 * steps, agglomeration="EAM",
+                     forces="{ sphereDrag; gravity; }",
+                     gravity=(0, -9.81, 0), rotation=False,
+                     hard_sphere=boxcase.KERNEL
+                     + f"    pairSearch {search};\n"
+                     + "    agglomerationModel EAM;\n    walls {}\n")
     return nc**3
 
 

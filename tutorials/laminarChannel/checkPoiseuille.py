@@ -15,59 +15,51 @@ import re
 import sys
 from pathlib import Path
 
+from aggloTools import cloud, regression as reg, times as ftimes
+from aggloTools.foamfile import read_dict
+
 case = Path(__file__).resolve().parent
 
-
-def read_entry(path, key):
-    text = Path(path).read_text()
-    m = re.search(r"^\s*" + re.escape(key) + r"\s+([^;]+);", text, re.M)
-    if not m:
-        sys.exit(f"{key} not found in {path}")
-    return m.group(1).strip()
-
-
-nu = float(read_entry(case / "constant/transportProperties", "nu"))
-ubar = float(read_entry(case / "constant/fvOptions", "Ubar").strip("()").split()[0])
+nu = float(read_dict(case / "constant/transportProperties")["nu"])
+ubar = float(str(read_dict(case / "constant/fvOptions")["momentumSource"][
+    "Ubar"][0]).strip("("))
 blocks = (case / "system/blockMeshDict").read_text()
-ny = int(re.search(r"\(\s*\d+\s+(\d+)\s+\d+\s*\)\s*simpleGrading", blocks).group(1))
+ny = int(re.search(r"\(\s*\d+\s+(\d+)\s+\d+\s*\)\s*simpleGrading",
+                   blocks).group(1))
 height = 2.0
 h = height / 2
 dy = height / ny
 
-times = sorted((p for p in case.iterdir() if re.fullmatch(r"[0-9.e+-]+", p.name)
-                and p.name != "0"), key=lambda p: float(p.name))
-last = times[-1]
-G = float(read_entry(last / "uniform/momentumSourceProperties", "gradient"))
+last = ftimes.time_dirs(case)[-1]
+G = float(read_dict(last / "uniform/momentumSourceProperties")["gradient"])
 
 G_analytic = 3 * nu * ubar / h**2
 G_fv = 3 * nu * ubar / (h**2 + dy**2 / 2)
 
-n_injected = len(re.findall(r"^\s*\(\s*[-+0-9.eE]+\s+[-+0-9.eE]+\s+[-+0-9.eE]+\s*\)", (case / "constant/kinematicCloudPositions").read_text(), re.M))
-positions = (last / "lagrangian/kinematicCloud/positions").read_text()
-m = re.search(r"^(\d+)\s*$", positions.split("// * *")[-1], re.M)
-n_final = int(m.group(1)) if m else 0
+# the injected positions: an ASCII list of (x y z), read as a list file
+n_injected = len(cloud.read_lagrangian(
+    case / "constant/kinematicCloudPositions"))
+n_final = len(cloud.cloud_positions(case, last.name))
 
-rows = [
+rows = [reg.row(v <= t, check=n, value=v, tolerance=t) for n, v, t in (
     ("gradient vs discrete FV Poiseuille", abs(G / G_fv - 1), 1e-6),
     ("gradient vs analytic Poiseuille", abs(G / G_analytic - 1), 1e-2),
-    ("particles kept (injected - final)", abs(n_injected - n_final), 0),
-]
+    ("particles kept (injected - final)", abs(n_injected - n_final), 0))]
 summary = {
     "time": float(last.name), "gradient": G, "gradientAnalytic": G_analytic,
     "gradientFV": G_fv, "particlesInjected": n_injected,
-    "particlesFinal": n_final,
-    "checks": [{"name": n, "value": v, "tolerance": t, "pass": v <= t}
-               for n, v, t in rows],
+    "particlesFinal": n_final, "regression": rows,
 }
 (case / "results").mkdir(exist_ok=True)
-(case / "results/summary.json").write_text(json.dumps(summary, indent=2) + "\n")
+(case / "results/summary.json").write_text(json.dumps(summary, indent=2)
+                                           + "\n")
 
 print(f"laminarChannel at t = {last.name}: G = {G:.10g} "
       f"(discrete FV {G_fv:.10g}, analytic {G_analytic:.10g})")
-ok = True
-for n, v, t in rows:
-    status = "PASS" if v <= t else "FAIL"
-    ok &= v <= t
-    print(f"  {status}  {n}: {v:.3g} (tolerance {t:g})")
+cols = [reg.Column("status", "status", 6, gap=""),
+        reg.Column("check", "check", 36, gap="  "),
+        reg.Column("value", "value", 10, ">", lambda v: f"{v:.3g}"),
+        reg.Column("tolerance", "tolerance", 10, ">", lambda v: f"{v:g}")]
+print("\n".join(reg.table(rows, cols)))
 print(f"results in {case / 'results/summary.json'}")
-sys.exit(0 if ok else 1)
+sys.exit(1 if reg.counts(rows)[reg.FAIL] else 0)

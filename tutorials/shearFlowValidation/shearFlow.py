@@ -6,6 +6,7 @@ validation (paper Appendix B; doc/cases.md B.1-B.6).
     shearFlow.py init CASE             exact Couette profile and particles
     shearFlow.py settle CASE           set aside a last time folder whose
                                        write was cut off (before a restart)
+    shearFlow.py progress CASE         simulated time and ETA of a run
     shearFlow.py post PRESET           results/PRESET: summary.json, plots,
                                        regression.txt (exit 1 on a FAIL)
 
@@ -16,19 +17,16 @@ rebounds, no agglomeration: the secondary first-contact check of B.6).
 
 import json
 import math
-import os
 import sys
 from pathlib import Path
 
 import numpy as np
 
-HERE = Path(__file__).resolve().parent
-# The project's tools (tutorial copies elsewhere find them through the
-# environment of etc/bashrc)
-sys.path.insert(0, str(Path(os.environ.get("AGGLO_PROJECT_DIR",
-                                           HERE.parents[1])) / "tools"))
+from aggloTools import (cloud, fields, placement, progress as prog,
+                        regression as reg, render, stats, times)
+from aggloTools.foamfile import check_keys, read_dict
 
-from aggloTools import foamio  # noqa: E402
+HERE = Path(__file__).resolve().parent
 
 # Physical data of doc/cases.md B.1 (the case files hold the same values)
 H = 2.28e-21        # Hamaker constant of polystyrene [J]
@@ -84,9 +82,9 @@ COMMON_KEYS = {"gammaDot", "delta", "LzByDelta", "ny", "nz", "dParticle",
 
 def presets():
     """The presets file, every entry checked."""
-    ps = foamio.read_dict(HERE / "presets")
+    ps = read_dict(HERE / "presets")
     for name, p in ps.items():
-        foamio.check_keys(p, COMMON_KEYS if name == "common"
+        check_keys(p, COMMON_KEYS if name == "common"
                           else PRESET_KEYS, f"presets/{name}")
     return ps
 
@@ -146,52 +144,21 @@ SETTINGS_KEYS = {"preset", "run", "gammaDot", "delta", "yMin", "uWall",
 def read_settings(case):
     """The caseSettings of a run, every entry checked."""
     f = Path(case) / "system" / "caseSettings"
-    s = foamio.read_dict(f)
-    foamio.check_keys(s, SETTINGS_KEYS, str(f))
+    s = read_dict(f)
+    check_keys(s, SETTINGS_KEYS, str(f))
     return s
 
 
 # -------------------------------------------------------------------- init
 
 def random_positions(n, d, box, seed, wall_gap):
-    """n non-overlapping centres, uniform in box = (Lx, ymin, ymax, Lz),
-    periodic in x and z, at least wall_gap from the walls (seeded)."""
+    """n non-overlapping centres (distance at least d), uniform in box =
+    (Lx, ymin, ymax, Lz), periodic in x and z, at least wall_gap from the
+    walls (seeded; aggloTools.placement)."""
     Lx, ymin, ymax, Lz = box
-    rng = np.random.default_rng(seed)
-    h = d  # hash cell: overlaps only with neighbouring cells
-    nxh, nzh = max(1, int(Lx // h)), max(1, int(Lz // h))
-    grid = {}
-    out = np.empty((n, 3))
-    k = 0
-    while k < n:
-        x = np.array([rng.uniform(0, Lx),
-                      rng.uniform(ymin + wall_gap, ymax - wall_gap),
-                      rng.uniform(0, Lz)])
-        ci = (int(x[0] / Lx * nxh) % nxh, int((x[1] - ymin) // h),
-              int(x[2] / Lz * nzh) % nzh)
-        ok = True
-        for a in (-1, 0, 1):
-            for b in (-1, 0, 1):
-                for c in (-1, 0, 1):
-                    key = ((ci[0] + a) % nxh, ci[1] + b, (ci[2] + c) % nzh)
-                    for j in grid.get(key, ()):
-                        r = out[j] - x
-                        r[0] -= Lx * round(r[0] / Lx)
-                        r[2] -= Lz * round(r[2] / Lz)
-                        if r @ r < d * d:
-                            ok = False
-                            break
-                    if not ok:
-                        break
-                if not ok:
-                    break
-            if not ok:
-                break
-        if ok:
-            out[k] = x
-            grid.setdefault(ci, []).append(k)
-            k += 1
-    return out
+    return placement.place(n, d, (0, ymin + wall_gap, 0),
+                           (Lx, ymax - wall_gap, Lz), (Lx, None, Lz),
+                           np.random.default_rng(seed))
 
 
 def init(case):
@@ -205,12 +172,12 @@ def init(case):
     yc = -delta + (np.arange(ny) + 0.5) * 2 * delta / ny
     U = np.zeros((nx * ny * nz, 3))
     U[:, 0] = np.tile(np.repeat(gamma * yc, nx), nz)   # x fastest
-    foamio.set_internal_vector_field(case / "0" / "U", U)
+    fields.set_internal_vector_field(case / "0" / "U", U)
 
     d = float(s["dParticle"])
     x = random_positions(int(s["nParticles"]), d, (Lx, -delta, delta, Lz),
                          int(s["seed"]), 0.5 * d)
-    foamio.write_cloud(case, x, d, RHO_P)
+    cloud.write_cloud(case, x, d, RHO_P)
     print(f"shearFlow.py init: {len(x)} particles, U = {gamma} y e_x in "
           f"{nx}x{ny}x{nz} cells")
 
@@ -224,7 +191,7 @@ class Run:
         self.case = Path(case)
         self.name = self.case.name
         self.s = read_settings(case)
-        self.st = foamio.read_stats(case)
+        self.st = stats.read_stats(case)
         st = self.st
         self.t = st["Time"]
         self.gamma = float(self.s["gammaDot"])
@@ -260,13 +227,13 @@ class Run:
 def row(name, value, expected, tol, ok, unit="", nr=None):
     """A regression row: ok True/False (PASS/FAIL), None (INFO); nr, the
     reason why the band cannot fail, makes it n/r."""
-    status = ("n/r" if nr else "INFO" if ok is None
-              else "PASS" if ok else "FAIL")
-    out = {"check": name, "value": value, "expected": expected,
-           "tolerance": tol, "status": status, "unit": unit}
-    if nr:
-        out["reason"] = nr
-    return out
+    r = reg.row(ok, nr, check=name, value=value, expected=expected,
+                tolerance=tol)
+    reason = r.pop("reason", None)
+    r["unit"] = unit            # the field order of summary.json
+    if reason:
+        r["reason"] = reason
+    return r
 
 
 def post(preset, runs_dir=None, out_dir=None):
@@ -431,7 +398,7 @@ def post(preset, runs_dir=None, out_dir=None):
     print(table)
     plots(runs, out, a_th, K_ST, n0, gamma)
     picture(runs, out)
-    return 0 if all(r["status"] != "FAIL" for r in rows) else 1
+    return 0 if all(r["status"] != reg.FAIL for r in rows) else 1
 
 
 def fmt(v):
@@ -444,19 +411,18 @@ def fmt(v):
 
 def regression_table(preset, rows):
     w = max(len(r["check"]) for r in rows)
-    lines = [f"shearFlowValidation regression, preset {preset}",
-             f"{'check':<{w}}  {'value':>10}  {'expected':>9}  "
-             f"{'tolerance':>11}  status", "-" * (w + 46)]
+    cols = [reg.Column("check", "check", w),
+            reg.Column("value", "value", 10, ">", fmt, "  "),
+            reg.Column("expected", "expected", 9, ">", fmt, "  "),
+            reg.Column("tolerance", "tolerance", 11, ">", fmt, "  "),
+            reg.Column("status", "status", gap="  ")]
+    head, *body = reg.table(rows, cols)
+    lines = [f"shearFlowValidation regression, preset {preset}", head,
+             "-" * (w + 46)] + body + ["-" * (w + 46)]
     for r in rows:
-        lines.append(f"{r['check']:<{w}}  {fmt(r['value']):>10}  "
-                     f"{fmt(r['expected']):>9}  {fmt(r['tolerance']):>11}  "
-                     f"{r['status']}")
-    n_fail = sum(r["status"] == "FAIL" for r in rows)
-    lines.append("-" * (w + 46))
-    for r in rows:
-        if r["status"] == "n/r":
+        if r["status"] == reg.NR:
             lines.append(f"n/r {r['check']}: {r['reason']}")
-    lines.append(f"{len(rows)} rows, {n_fail} FAIL")
+    lines.append(f"{len(rows)} rows, {reg.counts(rows)[reg.FAIL]} FAIL")
     return "\n".join(lines)
 
 
@@ -544,19 +510,18 @@ def plots(runs, out, a_th, K_ST, n0, gamma):
 def picture(runs, out):
     """pyvista picture of the final particle field of each agglomerating
     run, coloured by primaries per agglomerate."""
-    from aggloTools import render
     for name in ("EAM", "MAM"):
         if name not in runs:
             continue
         r = runs[name]
-        tdirs = [p for p in foamio.time_dirs(r.case)
+        tdirs = [p for p in times.time_dirs(r.case)
                  if (p / "lagrangian" / "kinematicCloud" / "positions")
                  .exists() and float(p.name) > 0]
         if not tdirs:
             continue
         lag = tdirs[-1] / "lagrangian" / "kinematicCloud"
-        x = foamio.read_positions(lag / "positions")
-        npr = foamio.read_lagrangian(lag / "nPrimary")
+        x = cloud.read_positions(lag / "positions")
+        npr = cloud.read_lagrangian(lag / "nPrimary")
         delta, Lx, Lz = (float(r.s[k]) for k in ("delta", "Lx", "Lz"))
         n_ag = int(np.sum(npr > 1))
         render.particles_picture(
@@ -564,6 +529,19 @@ def picture(runs, out):
             (0, Lx, -delta, delta, 0, Lz),
             title=f"{name}, t*gammaDot = {float(tdirs[-1].name) * r.gamma:.0f}"
                   f": {len(x)} particles, {n_ag} agglomerates (coloured)")
+
+
+def progress(case):
+    """One line: t*gammaDot, fraction done and ETA from the solver log."""
+    s = read_settings(case)
+    g, t_end = float(s["gammaDot"]), float(s["endTime"])
+    now = prog.solver_progress(Path(case) / "log.aggloPimpleFoam", t_end,
+                               float(s["deltaT"]))
+    if now is None:
+        return "starting"
+    t, frac, eta = now
+    return (f"t*gammaDot = {t * g:.1f}, run ends at {t_end * g:.0f} "
+            + prog.line(frac, eta))
 
 
 # -------------------------------------------------------------------- main
@@ -575,8 +553,11 @@ def main(argv):
     if len(argv) == 2 and argv[0] == "init":
         init(argv[1])
         return 0
+    if len(argv) == 2 and argv[0] == "progress":
+        print(progress(argv[1]))
+        return 0
     if len(argv) == 2 and argv[0] == "settle":
-        foamio.set_aside_incomplete_times(argv[1])
+        times.set_aside_incomplete_times(argv[1])
         return 0
     if len(argv) >= 2 and argv[0] == "post":
         return post(argv[1], *(argv[2:4]))

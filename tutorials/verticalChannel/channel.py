@@ -22,8 +22,11 @@
     channel.py progress CASE      stage, simulated time and ETA of a run
     channel.py settle CASE        set aside a last time folder whose write
                                   was cut off (before a restart)
-    channel.py post PRESET        results/PRESET: summary.json,
-                                  regression.txt, plots (exit 1 on a FAIL)
+    channel.py get preset PRESET KEY | get configuration CONFIG KEY
+                                  one value of a preset or configuration
+                                  (seededPairs, twoWay, ...)
+
+Post-processing: channelPost.py PRESET.
 
 Stages: unladen (single phase), release and dispersion (one cloud
 "particles", collisions on, agglomeration off), agglomeration (clouds EAM
@@ -31,10 +34,8 @@ and MAM in one run for one-way coupled configurations, one per run for the
 two-way coupled ones; counters zeroed at its start).
 """
 
-import json
 import math
 import os
-import re
 import shutil
 import sys
 import time as time_module
@@ -42,11 +43,10 @@ from pathlib import Path
 
 import numpy as np
 
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(Path(os.environ.get("AGGLO_PROJECT_DIR",
-                                           HERE.parents[1])) / "tools"))
+from aggloTools import cloud, fields, placement, progress as prog, times
+from aggloTools.foamfile import check_keys, read_dict
 
-from aggloTools import foamio  # noqa: E402
+HERE = Path(__file__).resolve().parent
 
 STAGES = ("unladen", "release", "dispersion", "agglomeration")
 MODELS = ("EAM", "MAM")
@@ -74,14 +74,14 @@ CONFIGURATION_KEYS = {"subModels", "wall", "d", "en"}
 
 def read_presets():
     """The presets file, every entry checked."""
-    d = foamio.read_dict(HERE / "presets")
+    d = read_dict(HERE / "presets")
     for name, p in d.items():
         if name == "configurations":
             for c, cd in p.items():
-                foamio.check_keys(cd, CONFIGURATION_KEYS,
+                check_keys(cd, CONFIGURATION_KEYS,
                                   f"presets/configurations/{c}")
         else:
-            foamio.check_keys(p, COMMON_KEYS if name == "common"
+            check_keys(p, COMMON_KEYS if name == "common"
                               else PRESET_KEYS, f"presets/{name}")
     return d
 
@@ -96,6 +96,7 @@ def preset(name):
     p = dict(d["common"])
     p.update(d[name])
     p["name"] = name
+    p.setdefault("seededPairs", 0)
     p["n"] = [int(x) for x in _nums(p["n"])]
     p["window"] = _nums(p["window"])
     p["tScale"] = p["delta"] / p["Ubar"]            # delta/U_B [s]
@@ -253,14 +254,14 @@ SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
 def read_settings(case):
     """The caseSettings of a stage, every entry checked."""
     f = Path(case) / "system" / "caseSettings"
-    s = foamio.read_dict(f)
-    foamio.check_keys(s, SETTINGS_KEYS, str(f))
+    s = read_dict(f)
+    check_keys(s, SETTINGS_KEYS, str(f))
     return s
 
 
 def cell_centres(case, time="0"):
     """Cell centres (postProcess -func writeCellCentres must have run)."""
-    return foamio.read_internal(Path(case) / time / "C")
+    return fields.read_internal(Path(case) / time / "C")
 
 
 class Grid:
@@ -321,79 +322,28 @@ def init(case):
         U[:, 2] -= (amp * f * kx / kz * np.cos(kx * x + ph[1])
                     * np.sin(kz * z))
     U += A * Ub * 0.05 * rng.standard_normal(U.shape) * f[:, None]
-    foamio.set_internal_vector_field(case / "0/U", U)
+    fields.set_internal_vector_field(case / "0/U", U)
 
 
 # ----------------------------------------------------------------- release
 
-def _overlaps(x, dmin, Lx, Lz, query=None):
-    """Sorted indices max(i, j) of the pairs closer than dmin, periodic in
-    x (period Lx) and z (Lz) by minimum image, among the pairs with i in
-    query (default: all particles). Vectorised grid search: cells of at
-    least dmin (about one particle per cell) that tile the periods, the
-    particles counting-sorted by cell, the 27 neighbour cells of every
-    queried particle looked up directly."""
-    n = len(x)
-    q = np.arange(n) if query is None else np.asarray(query, np.int64)
-    h = max(dmin, (Lx * np.ptp(x[:, 1]) * Lz / max(n, 1))**(1 / 3))
-    nx, nz = max(1, int(Lx // h)), max(1, int(Lz // h))
-    y0 = x[:, 1].min()
-    ny = int((x[:, 1].max() - y0) // h) + 1
-    i = np.floor(x[:, 0] / (Lx / nx)).astype(np.int64) % nx
-    j = np.minimum(np.floor((x[:, 1] - y0) / h).astype(np.int64), ny - 1)
-    k = np.floor(x[:, 2] / (Lz / nz)).astype(np.int64) % nz
-    key = i + nx * (j + ny * k)
-    order = np.argsort(key, kind="stable")
-    count = np.bincount(key, minlength=nx * ny * nz)
-    start = np.concatenate(([0], np.cumsum(count)[:-1]))
-    bad = []
-    for a in (-1, 0, 1):
-        for b in (-1, 0, 1):
-            jb = j[q] + b
-            inside = (jb >= 0) & (jb < ny)
-            for c in (-1, 0, 1):
-                sel = q[inside]
-                nk = ((i[sel] + a) % nx
-                      + nx * (jb[inside] + ny * ((k[sel] + c) % nz)))
-                cnt, st = count[nk], start[nk]
-                for m in range(int(cnt.max(initial=0))):
-                    has = cnt > m
-                    sel, cnt, st = sel[has], cnt[has], st[has]
-                    other = order[st + m]
-                    ok = other != sel
-                    s1, o1 = sel[ok], other[ok]
-                    r = x[s1] - x[o1]
-                    r[:, 0] -= Lx * np.round(r[:, 0] / Lx)
-                    r[:, 2] -= Lz * np.round(r[:, 2] / Lz)
-                    close = np.einsum("ij,ij->i", r, r) < dmin**2
-                    bad.append(np.maximum(s1[close], o1[close]))
-    return np.unique(np.concatenate(bad)) if bad else np.zeros(0, int)
-
-
 def place(N, dp, L, rng):
     """N non-overlapping positions (centre distance at least 1.001 dp) in
     the channel [0, Lx) x [dp/2 1.001, Ly - dp/2 1.001] x [0, Lz),
-    periodic in x and z: uniform random draws; of every overlapping pair
-    the particle of the higher index is drawn again, and only the redrawn
-    particles are checked again (the others do not overlap each other)."""
+    periodic in x and z (aggloTools.placement)."""
     Lx, Ly, Lz = L
-    lo = np.array([0, dp / 2 * 1.001, 0])
-    hi = np.array([Lx, Ly - dp / 2 * 1.001, Lz])
-    x = rng.uniform(lo, hi, (N, 3))
-    query = None
-    for _ in range(100):
-        bad = _overlaps(x, dp * 1.001, Lx, Lz, query)
-        if not len(bad):
-            return x
-        x[bad] = rng.uniform(lo, hi, (len(bad), 3))
-        query = bad
-    sys.exit("channel.py release: could not place the particles")
+    try:
+        return placement.place(N, dp * 1.001, (0, dp / 2 * 1.001, 0),
+                               (Lx, Ly - dp / 2 * 1.001, Lz),
+                               (Lx, None, Lz), rng)
+    except RuntimeError as e:
+        sys.exit(f"channel.py release: {e}")
 
 
 def mesh_lines(case):
     """The face coordinates along x, y and z of the one-block blockMesh
     grid (points ordered x fastest, then y, z)."""
-    pts = foamio.read_lagrangian(Path(case) / "constant/polyMesh/points")
+    pts = cloud.read_lagrangian(Path(case) / "constant/polyMesh/points")
     s = read_settings(case)
     nx, ny = int(s["nx"]), int(s["ny"])
     return (pts[:nx + 1, 0], pts[:(nx + 1) * (ny + 1):nx + 1, 1],
@@ -420,10 +370,10 @@ def release(case, time=None):
     p = preset(s["preset"])
     c = configuration(s["configuration"])
     if time is None:
-        time = foamio.time_dirs(case)[-1].name
+        time = times.time_dirs(case)[-1].name
     C = cell_centres(case, time)
     grid = Grid(C, p["n"])
-    U = foamio.read_internal(case / time / "U")
+    U = fields.read_internal(case / time / "U")
     N, dp = int(p["nParticles"]), float(c["d"])
     rng = np.random.default_rng(int(p["seed"]) + 1000)
     t0 = time_module.time()
@@ -433,18 +383,18 @@ def release(case, time=None):
     procs = sorted(case.glob("processor[0-9]*"),
                    key=lambda d: int(d.name[9:]))
     if not procs:
-        foamio.write_cloud(case, x, dp, p["rhoParticle"], U=Up,
+        cloud.write_cloud(case, x, dp, p["rhoParticle"], U=Up,
                            cloud="particles", time=time)
     else:
         owner = np.empty(len(C), np.int64)
         for rank, d in enumerate(procs):
-            owner[foamio.read_lagrangian(
+            owner[cloud.read_lagrangian(
                 d / "constant/polyMesh/cellProcAddressing").astype(
                     np.int64)] = rank
         rank = owner[containing_cell(mesh_lines(case), x)]
         for r, d in enumerate(procs):
             mine = np.nonzero(rank == r)[0]
-            foamio.write_cloud(d, x[mine], dp, p["rhoParticle"], U=Up[mine],
+            cloud.write_cloud(d, x[mine], dp, p["rhoParticle"], U=Up[mine],
                                cloud="particles", time=time, ids=mine,
                                count=N)
     t2 = time_module.time()
@@ -482,11 +432,6 @@ def branch_clouds(case, time, models):
 
 # ------------------------------------------------------------ seeded pairs
 
-def _field_class(path):
-    m = re.search(r"class\s+(\S+);", Path(path).read_text()[:2000])
-    return m.group(1) if m else ""
-
-
 def seed_pairs(case, clouds):
     """Add the smoke preset's seeded pairs (doc/cases.md A.11) to the clouds of
     the case's latest time: nPairs pairs in |y| < delta/4 with a centre gap
@@ -503,9 +448,9 @@ def seed_pairs(case, clouds):
     n_pairs = int(p.get("seededPairs", 0))
     if not n_pairs:
         return
-    time = foamio.time_dirs(case)[-1].name
+    time = times.time_dirs(case)[-1].name
     grid = Grid(cell_centres(case, time), p["n"])
-    Uf = foamio.read_internal(case / time / "U")
+    Uf = fields.read_internal(case / time / "U")
     dp = float(configuration(s["configuration"])["d"])
     Lx, Ly, Lz = p["L"]
     d = p["delta"]
@@ -529,11 +474,9 @@ def seed_pairs(case, clouds):
     u_new = np.empty((2 * n_pairs, 3))
     x_new[0::2], x_new[1::2] = xa, xb
     u_new[0::2], u_new[1::2] = ua, ub
-    for cloud in clouds:
-        cdir = case / time / "lagrangian" / cloud
-        ids = foamio.read_lagrangian(cdir / "origId").astype(int)
-        x0 = foamio.read_positions(cdir / "positions")
-        n0 = len(x0)
+    for name in clouds:
+        ids = cloud.read_lagrangian(case / time / "lagrangian" / name
+                                    / "origId").astype(int)
         new = {"U": u_new, "d": np.full(2 * n_pairs, dp),
                "dTarget": np.full(2 * n_pairs, dp),
                "rho": np.full(2 * n_pairs, p["rhoParticle"]),
@@ -543,38 +486,8 @@ def seed_pairs(case, clouds):
                    2 * n_pairs), "lastPartnerId": -np.ones(2 * n_pairs),
                "lastPartnerProc": -np.ones(2 * n_pairs),
                "lastContactTime": np.full(2 * n_pairs, -1e15)}
-        for f in sorted(cdir.iterdir()):
-            if f.name in ("positions", "coordinates"):
-                continue
-            cls = _field_class(f)
-            old = foamio.read_lagrangian(f)
-            vec = cls.startswith("vector")
-            if not len(old):
-                old = np.zeros((0, 3)) if vec else np.zeros(0)
-            add = new.get(f.name, np.zeros((2 * n_pairs, 3)) if vec
-                          else np.zeros(2 * n_pairs))
-            vals = np.concatenate((old, add))
-            if vec:
-                lines = ["(%.17g %.17g %.17g)" % tuple(r) for r in vals]
-            elif cls.startswith("label"):
-                lines = ["%d" % v for v in vals]
-            else:
-                lines = ["%.17g" % v for v in vals]
-            loc = f"{time}/lagrangian/{cloud}"
-            foamio.write_foamfile(f, cls, loc, f.name,
-                                  f"{len(vals)}\n(\n" + "\n".join(lines)
-                                  + "\n)")
-        xs = np.concatenate((x0, x_new))
-        foamio.write_foamfile(
-            cdir / "positions", "Cloud<basicAgglomerateParcel>",
-            f"{time}/lagrangian/{cloud}", "positions",
-            f"{len(xs)}\n(\n" + "\n".join(
-                "(%.17g %.17g %.17g) -1" % tuple(r) for r in xs) + "\n)")
-        (cdir / "coordinates").unlink(missing_ok=True)
-        cp = case / time / "uniform/lagrangian" / cloud / "cloudProperties"
-        cp.write_text(re.sub(r"geometry\s+\w+;", "geometry positions;",
-                             cp.read_text()))
-        print(f"{cloud}: {n_pairs} seeded pairs added to {n0} particles"
+        n0 = cloud.append_particles(case, time, name, x_new, new)
+        print(f"{name}: {n_pairs} seeded pairs added to {n0} particles"
               f" (ids {ids.max() + 1}..{ids.max() + 2 * n_pairs})")
 
 
@@ -585,34 +498,14 @@ def progress(case):
     case = Path(case)
     s = read_settings(case)
     p = preset(s["preset"])
-    log = case / "log.aggloPimpleFoam"
-    if not log.exists():
-        return "starting"
-    text = log.read_text(errors="replace")
-    times = re.findall(r"^Time = ([-+0-9.eE]+)", text, re.M)
-    if not times:
-        return "starting"
-    t = float(times[-1])
     t_end = float(s["endTime"])
-    # the start of this invocation: the last "Starting time loop"
-    start = text.rfind("Starting time loop")
-    first = re.search(r"^Time = ([-+0-9.eE]+)", text[start:], re.M)
-    t0 = float(first.group(1)) - p["deltaT"] if first else t
-    cpu = re.findall(r"ExecutionTime = ([0-9.eE+-]+) s", text[start:])
-    frac = (t - t0) / max(t_end - t0, 1e-30)
-    eta = ""
-    if cpu and frac > 0:
-        el = float(cpu[-1])
-        eta = f", ETA {_hms(el * (1 - frac) / frac)}"
+    now = prog.solver_progress(case / "log.aggloPimpleFoam", t_end,
+                               p["deltaT"])
+    if now is None:
+        return "starting"
+    t, frac, eta = now
     return (f"{s['stage']}: T* = {t / p['tScale']:.2f}, stage ends at "
-            f"{t_end / p['tScale']:.2f} ({100 * min(frac, 1):.0f} % of this"
-            f" run{eta})")
-
-
-def _hms(sec):
-    sec = int(sec)
-    return (f"{sec // 3600}h{sec % 3600 // 60:02d}m" if sec >= 3600
-            else f"{sec // 60}m{sec % 60:02d}s")
+            f"{t_end / p['tScale']:.2f} " + prog.line(frac, eta))
 
 
 # ------------------------------------------------------------------- main
@@ -637,10 +530,15 @@ def main(argv):
     elif cmd == "progress":
         print(progress(argv[2]))
     elif cmd == "settle":
-        foamio.set_aside_incomplete_times(argv[2])
-    elif cmd == "post":
-        import channelPost
-        return channelPost.post(argv[2])
+        times.set_aside_incomplete_times(argv[2])
+    elif (cmd == "get" and len(argv) == 5
+          and argv[2] in ("preset", "configuration")):
+        d = (preset if argv[2] == "preset" else configuration)(argv[3])
+        if argv[4] not in d:
+            sys.exit(f"channel.py get: no entry '{argv[4]}' in "
+                     f"{argv[2]} {argv[3]}; entries: " + " ".join(d))
+        v = d[argv[4]]
+        print(int(v) if isinstance(v, bool) else v)
     else:
         print(__doc__)
         return 1

@@ -1,5 +1,8 @@
-"""verticalChannel post-processing (channel.py post PRESET): frequencies by
-Eq. 87, the Table D.6 regression, plots and the particle picture.
+"""verticalChannel post-processing: frequencies by Eq. 87, the Table D.6
+regression, plots and the particle picture.
+
+    channelPost.py PRESET     results/PRESET: summary.json, regression.txt,
+                              plots (exit 1 on a FAIL)
 
 Every run's statistics come from postProcessing/<model>HardSphere of its
 agglomeration stage (counters zeroed at the start of the stage)."""
@@ -7,12 +10,14 @@ agglomeration stage (counters zeroed at the start of the stage)."""
 import json
 import math
 import re
-from pathlib import Path
+import sys
 
 import numpy as np
 
 import channel
-from aggloTools import foamio
+from aggloTools import cloud, regression as reg, times
+from aggloTools.foamfile import read_dict
+from aggloTools.stats import last_output, read_stats, read_table
 
 HERE = channel.HERE
 
@@ -74,7 +79,7 @@ def window_rate(t, n, w0, w1):
 
 
 def analyse_run(p, adir, cloud):
-    st = foamio.read_stats(adir, cloud)
+    st = read_stats(adir, cloud)
     t0 = channel.end_time(p, "dispersion")
     T = (st["Time"] - t0) / p["tScale"]
     T = np.concatenate(([0.0], T))
@@ -123,25 +128,6 @@ def analyse_run(p, adir, cloud):
     return r
 
 
-def last_output(adir, cloud, name):
-    base = adir / "postProcessing" / f"{cloud}HardSphere"
-    files = sorted(base.glob(f"*/{name}"), key=lambda f: float(f.parent.name))
-    return files[-1] if files else None
-
-
-def read_table(path):
-    """Columns of agglomerateSizes.dat or profiles.dat (header '# k ...'
-    or '# x ...')."""
-    cols, rows = None, []
-    for line in Path(path).read_text().splitlines():
-        if line.startswith(("# x ", "# k ")):
-            cols = line[2:].split()
-        elif line and not line.startswith("#"):
-            rows.append([float(c) for c in line.split()])
-    a = np.array(rows) if rows else np.zeros((0, len(cols)))
-    return {c: a[:, i] for i, c in enumerate(cols)}
-
-
 def read_profiles(p, adir, cloud):
     """profiles.dat of the last write with per-volume values and the
     volume fraction based on the geometric slab volumes. Files written
@@ -157,7 +143,7 @@ def read_profiles(p, adir, cloud):
     if "slab volumes" in f.read_text()[:400]:
         return t
     Lx, Ly, Lz = p["L"]
-    pts = foamio.read_lagrangian(adir / "constant/polyMesh/points")
+    pts = cloud.read_lagrangian(adir / "constant/polyMesh/points")
     yf = np.unique(np.round(pts[:, 1], 12))
     yc, dy = 0.5 * (yf[1:] + yf[:-1]), np.diff(yf)
     nb = len(t["x"])
@@ -194,42 +180,48 @@ def ratio(a, sa, b, sb):
     return r, r * math.sqrt((sa / a)**2 + (sb / b)**2)
 
 
+def R(quantity, sim, sigma, paper, tolerance, status, note):
+    """A regression row."""
+    return dict(quantity=quantity, sim=sim, sigma=sigma, paper=paper,
+                tolerance=tolerance, status=status, note=note)
+
+
 def regression(p, res):
-    """Rows (name, sim, sigma, paper, tolerance, status, note)."""
+    """Rows (quantity, sim, sigma, paper, tolerance, status, note)."""
     rows = []
 
     def add(name, sim, sig, ref, note="", rel_tol=REL_TOL):
         if sim is None:
-            rows.append((name, None, None, ref, None, "n/r",
+            rows.append(R(name, None, None, ref, None, reg.NR,
                          note or "no events in the window"))
             return
         if ref is None:
-            rows.append((name, sim, sig, None, None, "n/r",
+            rows.append(R(name, sim, sig, None, None, reg.NR,
                          note or "no published value"))
             return
         tol = max(3 * sig, rel_tol * ref)
         if sig > REL_TOL * sim:
             # doc/cases.md A.8/A.9: compare only what the preset resolves
-            rows.append((name, sim, sig, ref, tol, "n/r",
+            rows.append(R(name, sim, sig, ref, tol, reg.NR,
                          note or "not resolvable at this preset (sigma ="
                          f" {sig / sim:.0%} of the ratio)"))
             return
         ok = abs(sim - ref) <= tol
-        rows.append((name, sim, sig, ref, tol, "PASS" if ok else "FAIL",
+        rows.append(R(name, sim, sig, ref, tol, reg.status(ok),
                      note))
 
     def direction(name, r, s, sign):
         """doc/cases.md A.9 direction checks: r - 1 must have the sign
         `sign` wherever |r - 1| > 3 sigma."""
         if r is None:
-            rows.append((name, None, None, None, None, "n/r",
+            rows.append(R(name, None, None, None, None, reg.NR,
                          "no events in the window"))
         elif abs(r - 1) <= 3 * s:
-            rows.append((name, r, s, None, 3 * s, "n/r",
+            rows.append(R(name, r, s, None, 3 * s, reg.NR,
                          "difference within 3 sigma"))
         else:
             ok = (r - 1) * sign > 0
-            rows.append((name, r, s, None, 3 * s, "PASS" if ok else "FAIL",
+            rows.append(R(name, r, s, None, 3 * s, reg.status(ok),
                          "must be " + ("> 1" if sign > 0 else "< 1")))
 
     models = ("EAM", "MAM")
@@ -247,8 +239,8 @@ def regression(p, res):
                 add(f"{c} {m} f_{q}", sim, sig, ref_q, events,
                     ABS_TOL[q])
             else:
-                rows.append((f"{c} {m} f_{q} x s^2", sim, sig, ref_q, None,
-                             "n/r", "not gated at this preset: " + events
+                rows.append(R(f"{c} {m} f_{q} x s^2", sim, sig, ref_q, None,
+                             reg.NR, "not gated at this preset: " + events
                              if ref_q is not None else
                              "no published value: " + events))
     # case ratios against the paper's
@@ -316,17 +308,24 @@ def regression(p, res):
     for (c, m), r in sorted(res.items()):
         ok = (r["massRelErr"] < 1e-10 and r["primariesConstant"]
               and r["countersNonDecreasing"] and r["NpBalance"])
-        rows.append((f"{c} {m} conservation", r["massRelErr"], None, 0.0,
-                     1e-10, "PASS" if ok else "FAIL",
+        rows.append(R(f"{c} {m} conservation", r["massRelErr"], None, 0.0,
+                     1e-10, reg.status(ok),
                      "mass, primaries, N_p = N - N_agg, counters"
                      " non-decreasing"))
     return rows
 
 
-def fmt(v, w=11):
-    if v is None:
-        return "-".rjust(w)
-    return f"{v:{w}.4g}"
+def fmt(v):
+    return "-" if v is None else f"{v:.4g}"
+
+
+COLUMNS = [reg.Column("quantity", "quantity", 44),
+           reg.Column("sim", "sim", 11, ">", fmt),
+           reg.Column("sigma", "sigma", 11, ">", fmt),
+           reg.Column("paper", "paper", 11, ">", fmt),
+           reg.Column("tolerance", "tolerance", 11, ">", fmt),
+           reg.Column("status", "status", 6),
+           reg.Column("note", "note", gap="  ")]
 
 
 def write_regression(path, p, rows, fluid):
@@ -345,18 +344,14 @@ def write_regression(path, p, rows, fluid):
                      f" (paper 0.053; nominal 0.0541),"
                      f" mean gradient {v['gradient']:.4g} m/s2")
     lines.append("")
-    lines.append(f"{'quantity':44s} {'sim':>11s} {'sigma':>11s}"
-                 f" {'paper':>11s} {'tolerance':>11s} status  note")
-    for name, sim, sig, ref, tol, st, note in rows:
-        lines.append(f"{name:44s} {fmt(sim)} {fmt(sig)} {fmt(ref)}"
-                     f" {fmt(tol)} {st:6s}  {note}")
-    nf = sum(r[5] == "FAIL" for r in rows)
-    lines += ["", f"{sum(r[5] == 'PASS' for r in rows)} PASS, {nf} FAIL,"
-              f" {sum(r[5] == 'n/r' for r in rows)} n/r (not resolved or"
+    lines += reg.table(rows, COLUMNS)
+    n = reg.counts(rows)
+    lines += ["", f"{n[reg.PASS]} PASS, {n[reg.FAIL]} FAIL,"
+              f" {n[reg.NR]} n/r (not resolved or"
               " not gated at this preset, or no events: reported, the"
               " reason in the note)"]
-    Path(path).write_text("\n".join(lines) + "\n")
-    return nf
+    (path).write_text("\n".join(lines) + "\n")
+    return n[reg.FAIL]
 
 
 # ----------------------------------------------------------------- plots
@@ -415,7 +410,7 @@ def plots(out, p, res, runs):
 
     # wall-normal profiles
     d = p["delta"]
-    nu = float(foamio.read_dict(HERE / "constant/transportProperties")
+    nu = float(read_dict(HERE / "constant/transportProperties")
                ["nu"])
     fig, ax = plt.subplots(2, 3, figsize=(15, 8))
     fig2, ax2 = plt.subplots(1, 2, figsize=(11, 4.5))
@@ -470,12 +465,12 @@ def picture(out, p, runs):
     """pyvista picture of the first finished EAM run's last time."""
     from aggloTools import render
     for (c, m), (adir, cloud) in sorted(runs.items()):
-        t = foamio.time_dirs(adir)[-1]
+        t = times.time_dirs(adir)[-1]
         cdir = t / "lagrangian" / cloud
         if not (cdir / "positions").exists():
             continue
-        x = foamio.read_positions(cdir / "positions")
-        n = foamio.read_lagrangian(cdir / "nPrimary")
+        x = cloud.read_positions(cdir / "positions")
+        n = cloud.read_lagrangian(cdir / "nPrimary")
         if not len(x):
             continue
         Lx, Ly, Lz = p["L"]
@@ -499,7 +494,7 @@ def post(pname):
     out = HERE / "results" / pname
     out.mkdir(parents=True, exist_ok=True)
     if not runs:
-        print(f"channel.py post: no finished runs under runs/{pname}")
+        print(f"channelPost.py: no finished runs under runs/{pname}")
         return 1
     fluid = {}
     ut, G = u_tau(p, HERE / "runs" / pname / "unladen")
@@ -524,15 +519,19 @@ def post(pname):
         "runs": {f"{c} {m}": {k: v for k, v in r.items()
                               if not k.startswith("_")}
                  for (c, m), r in sorted(res.items())},
-        "regression": [dict(zip(("quantity", "sim", "sigma", "paper",
-                                 "tolerance", "status", "note"), r))
-                       for r in rows],
+        "regression": rows,
     }
     (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
     plots(out, p, res, runs)
     try:
         picture(out, p, runs)
     except Exception as e:      # pyvista without a display: report, go on
-        print(f"channel.py post: no particle picture ({e})")
+        print(f"channelPost.py: no particle picture ({e})")
     print((out / "regression.txt").read_text())
     return 1 if nf else 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    sys.exit(post(sys.argv[1]))

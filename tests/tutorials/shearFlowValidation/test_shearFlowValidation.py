@@ -1,0 +1,141 @@
+"""tutorials/shearFlowValidation: the theory of doc/cases.md B.2 as coded in
+the post-processing (hand values of the spec), and the `ci` preset run end
+to end in a copy of the tutorial (about 4-5 minutes on 2 cores).
+
+The ci preset resolves: the detection-only first-contact count against
+Saffman-Turner (100 expected contacts, 10 %), the conservation of mass and
+primaries, N_p never increasing, and N_p(t)/N_p(0) against the B.8 curve
+driven by the run's own kernel. Its alpha is statistically meaningless
+(about one first-contact agglomeration), so only the wide band is gated."""
+
+import json
+import math
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from aggloTools.runner import project_dir, tutorial_module
+
+TUT = project_dir() / "tutorials" / "shearFlowValidation"
+shearFlow = tutorial_module("shearFlowValidation", "shearFlow")
+
+
+def saturated_fraction(png):
+    """The share of coloured (not black, grey or white) pixels of a PNG:
+    plotted data lines, markers, legends and colour scales; 0 for a
+    picture of empty axes."""
+    import matplotlib.image
+    img = matplotlib.image.imread(png)[..., :3]
+    return float(((img.max(axis=-1) - img.min(axis=-1)) > 0.2).mean())
+
+
+# ----------------------------------------------------------------- theory
+
+def test_alpha_theory_matches_spec_table():
+    """doc/cases.md B.2: f(1, 2, 4 um) = 0.95, 0.87, 0.79 (van de Ven & Mason),
+    f(25 um) = 0.5785, the group 1.4538e-7 and alpha_th at the tabulated
+    diameters."""
+    assert shearFlow.f_vdVM([1e-6, 2e-6, 4e-6]) == pytest.approx(
+        [0.95, 0.87, 0.79], abs=1e-12)
+    assert shearFlow.f_vdVM(25e-6) == pytest.approx(0.5785, abs=1e-4)
+    group = 8 * 2.28e-21 / (36 * math.pi * 1e-3 * 71 * (25e-6)**3)
+    assert group == pytest.approx(1.4538e-7, rel=1e-4)
+    table = {25: 3.401, 26: 3.303, 27: 3.212, 28: 3.126, 30: 2.970,
+             31.50: 2.863}
+    for d, a in table.items():
+        assert 100 * shearFlow.alpha_th(d * 1e-6) == pytest.approx(
+            a, abs=6e-4)
+
+
+def test_kernel_and_decay_match_spec():
+    """K_ST = 1.4792e-12 m3/s, the initial rate 650/s, and the B.8
+    recursion with K = K_ST and alpha = 0.034 over t*gammaDot = 1400:
+    0.9942 (consistent) and 0.9885 (printed)."""
+    K = shearFlow.kernel_ST(25e-6)
+    assert K == pytest.approx(1.4792e-12, rel=1e-4)
+    V, N0, gamma = 6.4e-6, 75000, 71.0
+    assert 0.5 * K * (N0 / V)**2 * V == pytest.approx(650.0, rel=1e-3)
+    n, dt = 280000, 0.005 / gamma
+    dn = np.full(n, 0.5 * K * N0**2 / V * dt)   # constant n (B.4)
+    ns = np.full(n, N0)
+    for form, end in (("consistent", 0.9942), ("printed", 0.9885)):
+        th = shearFlow.decay_theory(N0, dn, ns, 0.0340, form)
+        assert th[-1] / N0 == pytest.approx(end, abs=1e-4)
+
+
+def test_decay_removes_alpha_particles_per_collision():
+    """The consistent form removes alpha particles per collision (to first
+    order), the printed form 2 alpha."""
+    N0, a = 1e6, 0.05
+    dn = np.array([10.0])
+    for form, c in (("consistent", 1), ("printed", 2)):
+        th = shearFlow.decay_theory(N0, dn, [N0], a, form)
+        assert N0 - th[1] == pytest.approx(c * a * 10, rel=1e-5)
+
+
+# -------------------------------------------------------------- ci preset
+
+@pytest.fixture(scope="module")
+def ci_results(tmp_path_factory, foam_env):
+    tut = tmp_path_factory.mktemp("shearFlow") / "shearFlowValidation"
+    shutil.copytree(TUT, tut, ignore=shutil.ignore_patterns(
+        "runs", "results", "__pycache__"))
+    res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=1800)
+    (tut / "log.Allrun").write_text(res.stdout)
+    out = tut / "results" / "ci"
+    assert (out / "summary.json").exists(), res.stdout[-3000:]
+    return res, json.loads((out / "summary.json").read_text()), tut
+
+
+def test_ci_regression_table(ci_results):
+    """The Allrun prints the regression table, saves it, exits 0 with no
+    FAIL row, and writes the plots."""
+    res, summary, tut = ci_results
+    out = tut / "results" / "ci"
+    assert "shearFlowValidation regression, preset ci" in res.stdout
+    assert (out / "regression.txt").read_text().strip().endswith("0 FAIL")
+    assert res.returncode == 0, res.stdout[-3000:]
+    # every plot shows data (coloured lines or markers)
+    for png in ("alpha", "counts", "decay", "firstContacts"):
+        assert saturated_fraction(out / f"{png}.png") > 1e-3, png
+    # the particle pictures: agglomerates (coloured) where there are any
+    for name in ("EAM", "MAM"):
+        f = saturated_fraction(out / f"particles{name}.png")
+        n_agg = summary["runs"][name]["N_agg"]
+        assert (f > 0) == (n_agg > 0), (name, f, n_agg)
+
+
+def test_ci_first_contacts_match_saffman_turner(ci_results):
+    """Ghost contacts, first counting, t*gammaDot 1 -> 71: within 3 sqrt(N)
+    of (1/2) K_ST n0^2 V (t - t0) (doc/cases.md B.6), and a constant slope in
+    each half."""
+    _, s, _ = ci_results
+    det = s["detect"]
+    assert det["N_expected"] == pytest.approx(1.430 * 70, rel=2e-3)
+    assert abs(det["N_first"] - det["N_expected"]) \
+        <= 3 * math.sqrt(det["N_expected"])
+    for ns, ne in det["halves"]:
+        assert abs(ns - ne) <= 3 * math.sqrt(ne)
+    # ghost: nothing can repeat before the pair separates and is released
+    assert det["N_repeat"] == 0
+
+
+def test_ci_conservation_and_decay(ci_results):
+    """Mass to 1e-12, primaries exactly, N_p = N_p(0) - N_agg and N_p(t)
+    within 5 % of the consistent B.8 curve driven by its own kernel."""
+    _, s, _ = ci_results
+    for name in ("EAM", "MAM"):
+        r = s["runs"][name]
+        assert r["mass_rel_error"] <= 1e-12
+        assert r["Np_final_over_Np0"] == pytest.approx(
+            1 - r["N_agg"] / s["N0"], abs=1e-12)
+        assert r["Np_max_deviation_consistent"] <= 0.05
+        # paper counting: repeated contacts dominate (doc/cases.md B.4)
+        assert r["N_col"] > 10 * r["N_col_first"]
+    rows = {r["check"]: r for r in s["regression"]}
+    assert all(r["status"] != "FAIL" for r in rows.values())

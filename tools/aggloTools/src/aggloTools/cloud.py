@@ -1,0 +1,192 @@
+"""Lagrangian clouds: a complete initial cloud of basicAgglomerateParcels
+written in the legacy `positions` form, the cloud's fields read (ASCII or
+binary IOFields), the Cartesian positions read from the `positions` file
+or from the barycentric `coordinates` file and the mesh, and particles
+appended to a written cloud."""
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+from .foamfile import (binary_arch, field_class, is_binary, list_body,
+                       read_list_file as read_lagrangian, write_foamfile)
+from .mesh import Mesh
+
+
+def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
+                cloud="kinematicCloud", time="0", ids=None, count=None):
+    """Write a complete initial cloud (one particle per parcel) for the
+    basicAgglomerateParcel: the legacy positions file (cell -1: located on
+    reading) plus every field, with origProcId 0 and origId 0..N-1 or ids
+    (decomposition-independent ids); count (default: the largest id + 1)
+    is the particleCount from which new particles are numbered."""
+    loc = f"{time}/lagrangian/{cloud}"
+    out = Path(case) / loc
+    x = np.asarray(positions, float)
+    N = len(x)
+    zeros = np.zeros((N, 3))
+    U = zeros if U is None else np.asarray(U, float)
+    omega = zeros if omega is None else np.asarray(omega, float)
+    d = np.broadcast_to(np.asarray(d, float), (N,))
+    rho = np.broadcast_to(np.asarray(rho, float), (N,))
+    n_primary = (np.ones(N, int) if n_primary is None
+                 else np.asarray(n_primary, int))
+    ids = np.arange(N) if ids is None else np.asarray(ids, int)
+    if count is None:
+        count = int(ids.max()) + 1 if N else 0
+
+    def field(name, cls, a, fmt="%.17g"):
+        write_foamfile(out / name, cls, loc, name, list_body(a, fmt))
+
+    write_foamfile(out / "positions", "Cloud<basicAgglomerateParcel>", loc,
+                   "positions",
+                   f"{N}\n(\n" + "(%.17g %.17g %.17g) -1\n" * N
+                   % tuple(x.ravel().tolist()) + ")")
+    field("origProcId", "labelField", np.zeros(N, int), "%d")
+    field("origId", "labelField", ids, "%d")
+    field("active", "labelField", np.ones(N, int), "%d")
+    field("typeId", "labelField", np.zeros(N, int), "%d")
+    field("nParticle", "scalarField", np.ones(N))
+    field("d", "scalarField", d)
+    field("dTarget", "scalarField", d)
+    field("rho", "scalarField", rho)
+    field("age", "scalarField", np.zeros(N))
+    field("tTurb", "scalarField", np.zeros(N))
+    field("U", "vectorField", U)
+    field("UTurb", "vectorField", zeros)
+    field("omega", "vectorField", omega)
+    field("nPrimary", "labelField", n_primary, "%d")
+    write_foamfile(Path(case) / time / "uniform" / "lagrangian" / cloud
+                   / "cloudProperties", "dictionary",
+                   f"{time}/uniform/lagrangian/{cloud}", "cloudProperties",
+                   f"geometry positions;\nprocessor0 {{ particleCount "
+                   f"{count}; }}")
+
+
+def read_positions(path):
+    """Cartesian positions from the legacy `positions` file (ASCII rows
+    `(x y z) celli`, or binary records: the position and the cell label
+    as one raw block in parentheses, then a newline)."""
+    data = Path(path).read_bytes()
+    hend = data.index(b"}") + 1
+    head = data[:hend]
+    if is_binary(head):
+        label, scalar = binary_arch(head)
+        m = re.compile(rb"(\s|//[^\n]*)*(\d+)\s*\(\n?").match(data, hend)
+        n = int(m.group(2))
+        rec = np.dtype([("open", "u1"), ("x", scalar, 3), ("cell", label),
+                        ("close", "u1"), ("nl", "u1")])
+        a = np.frombuffer(data, rec, n, m.end())
+        if n and not ((a["open"] == ord("(")).all()
+                      and (a["close"] == ord(")")).all()
+                      and (a["nl"] == ord("\n")).all()):
+            raise ValueError(f"{path}: unexpected binary record layout")
+        return a["x"].astype(float).reshape(n, 3)
+    rows = re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", data[hend:].decode())
+    return np.array([r.split() for r in rows], float).reshape(-1, 3)
+
+
+def append_particles(case, time, cloud, x, new):
+    """Append len(x) particles at the Cartesian positions x to the written
+    cloud `cloud` of `time`: every field file of the cloud gets the values
+    of new (field name -> array) or zeros; the cloud is rewritten in the
+    legacy positions form (located on reading: any `coordinates` file is
+    removed and cloudProperties says `geometry positions`). Returns the
+    number of particles that were there before."""
+    cdir = Path(case) / str(time) / "lagrangian" / cloud
+    x0 = read_positions(cdir / "positions")
+    n0, n = len(x0), len(x)
+    loc = f"{time}/lagrangian/{cloud}"
+    for f in sorted(cdir.iterdir()):
+        if f.name in ("positions", "coordinates"):
+            continue
+        cls = field_class(f)
+        old = read_lagrangian(f)
+        vec = cls.startswith("vector")
+        if not len(old):
+            old = np.zeros((0, 3)) if vec else np.zeros(0)
+        add = new.get(f.name, np.zeros((n, 3)) if vec else np.zeros(n))
+        vals = np.concatenate((old, add))
+        if vec:
+            lines = ["(%.17g %.17g %.17g)" % tuple(r) for r in vals]
+        elif cls.startswith("label"):
+            lines = ["%d" % v for v in vals]
+        else:
+            lines = ["%.17g" % v for v in vals]
+        write_foamfile(f, cls, loc, f.name,
+                       f"{len(vals)}\n(\n" + "\n".join(lines) + "\n)")
+    xs = np.concatenate((x0, x))
+    write_foamfile(
+        cdir / "positions", "Cloud<basicAgglomerateParcel>", loc,
+        "positions", f"{len(xs)}\n(\n" + "\n".join(
+            "(%.17g %.17g %.17g) -1" % tuple(r) for r in xs) + "\n)")
+    (cdir / "coordinates").unlink(missing_ok=True)
+    cp = (Path(case) / str(time) / "uniform/lagrangian" / cloud
+          / "cloudProperties")
+    cp.write_text(re.sub(r"geometry\s+\w+;", "geometry positions;",
+                         cp.read_text()))
+    return n0
+
+
+def cloud_dir(case, time, cloud="kinematicCloud"):
+    """The folder <case>/<time>/lagrangian/<cloud>."""
+    return Path(case) / str(time) / "lagrangian" / cloud
+
+
+def read_cloud(case, time, cloud="kinematicCloud", names=None):
+    """The fields of a written cloud (default: every field file; the
+    position files excepted) as a dict name -> numpy array; the Cartesian
+    positions under 'positions' when the legacy file was written."""
+    d = cloud_dir(case, time, cloud)
+    if names is None:
+        names = [f.name for f in sorted(d.iterdir())
+                 if f.name not in ("positions", "coordinates")]
+    out = {n: read_lagrangian(d / n) for n in names if (d / n).exists()}
+    if (d / "positions").exists():
+        out["positions"] = read_positions(d / "positions")
+    return out
+
+
+def read_coordinates(path):
+    """The barycentric `coordinates` file of a cloud (ASCII or binary):
+    (coordinates (n, 4), celli, tetFacei, tetPti). Binary records are the
+    particle's raw barycentric and three labels (particle::sizeofPosition),
+    each followed by a newline."""
+    data = Path(path).read_bytes()
+    hend = data.index(b"}") + 1
+    head = data[:hend]
+    if is_binary(head):
+        label, scalar = binary_arch(head)
+        m = re.compile(rb"(\s|//[^\n]*)*(\d+)\s*\(\n?").match(data, hend)
+        n = int(m.group(2))
+        rec = np.dtype([("open", "u1"), ("b", scalar, 4), ("cell", label),
+                        ("tetFace", label), ("tetPt", label),
+                        ("close", "u1"), ("nl", "u1")])
+        a = np.frombuffer(data, rec, n, m.end())
+        if n and not ((a["open"] == ord("(")).all()
+                      and (a["close"] == ord(")")).all()
+                      and (a["nl"] == ord("\n")).all()):
+            raise ValueError(f"{path}: unexpected binary record layout")
+        return (a["b"].astype(float), a["cell"].astype(np.int64),
+                a["tetFace"].astype(np.int64), a["tetPt"].astype(np.int64))
+    text = data.decode()
+    rows = re.findall(r"\(([-+0-9.eE ]+)\)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)",
+                      text[hend:])
+    if not rows:
+        return (np.zeros((0, 4)),) + (np.zeros(0, np.int64),) * 3
+    b = np.array([r[0].split() for r in rows], float)
+    lab = np.array([r[1:] for r in rows], np.int64)
+    return b, lab[:, 0], lab[:, 1], lab[:, 2]
+
+
+def cloud_positions(case, time, cloud="kinematicCloud"):
+    """Cartesian positions of a written cloud: from the legacy `positions`
+    file where one was written (InfoSwitch writeLagrangianPositions on),
+    else from the barycentric `coordinates` and the case's mesh (a
+    processor folder is a case of its own)."""
+    d = cloud_dir(case, time, cloud)
+    if (d / "positions").exists():
+        return read_positions(d / "positions")
+    b, cell, face, pt = read_coordinates(d / "coordinates")
+    return Mesh(case).positions(b, cell, face, pt)

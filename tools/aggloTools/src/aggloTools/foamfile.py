@@ -1,0 +1,215 @@
+"""OpenFOAM files: the FoamFile header, dictionaries (flat `key value;`
+entries and sub-dictionaries), the binary header's arch, and list bodies
+(ASCII written, ASCII or binary read)."""
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
+| agglomerationHardSphere                                                     |
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    location    "{loc}";
+    object      {obj};
+}}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+"""
+
+
+def strip_comments(text):
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return re.sub(r"//[^\n]*", "", text)
+
+
+def _value(tok):
+    try:
+        v = float(tok)
+        return int(v) if re.fullmatch(r"[-+]?\d+", tok) else v
+    except ValueError:
+        return tok
+
+
+def parse_dict(text):
+    """Parse a dictionary of `key value;` entries and `name { ... }`
+    sub-dictionaries (no lists, macros or directives) into a dict."""
+    tokens = re.findall(r'"[^"]*"|[{};]|[^\s{};]+', strip_comments(text))
+    pos = 0
+
+    def block():
+        nonlocal pos
+        out = {}
+        while pos < len(tokens):
+            tok = tokens[pos]
+            if tok == "}":
+                pos += 1
+                return out
+            key = tok.strip('"')
+            pos += 1
+            if tokens[pos] == "{":
+                pos += 1
+                out[key] = block()
+                continue
+            vals = []
+            while tokens[pos] != ";":
+                vals.append(_value(tokens[pos]))
+                pos += 1
+            pos += 1
+            out[key] = vals[0] if len(vals) == 1 else vals
+        return out
+
+    d = block()
+    d.pop("FoamFile", None)
+    return d
+
+
+def read_dict(path):
+    return parse_dict(Path(path).read_text())
+
+
+def check_keys(d, valid, where):
+    """Stop with a message naming the entry, the dictionary and the valid
+    entries if the parsed dictionary d holds an entry not in valid."""
+    for key in d:
+        if key not in valid:
+            raise SystemExit(f"unknown entry '{key}' in {where}; valid "
+                             "entries: " + " ".join(sorted(valid)))
+
+
+def write_foamfile(path, cls, loc, obj, body):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(HEADER.format(cls=cls, loc=loc, obj=obj) + body
+                    + "\n\n// " + "*" * 73 + " //\n")
+
+
+def vec(v):
+    """An OpenFOAM vector `(x y z)` written exactly (repr of floats)."""
+    return "(" + " ".join(repr(float(c)) for c in v) + ")"
+
+
+def field_class(path):
+    """The class entry of a file's FoamFile header ('' if none)."""
+    m = re.search(rb"class\s+(\S+);", Path(path).read_bytes()[:2000])
+    return m.group(1).decode() if m else ""
+
+
+def binary_arch(head):
+    """(label dtype, scalar dtype) of a binary file's FoamFile header."""
+    m = re.search(rb"arch\s+\"([^\"]*)\"", head)
+    arch = m.group(1).decode() if m else "LSB;label=32;scalar=64"
+    order = ">" if arch.startswith("MSB") else "<"
+    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
+    return (np.dtype(f"{order}i{int(bits.get('label', 32)) // 8}"),
+            np.dtype(f"{order}f{int(bits.get('scalar', 64)) // 8}"))
+
+
+def is_binary(head):
+    return re.search(rb"format\s+binary\s*;", head) is not None
+
+
+def binary_list(data, pos, kind, head):
+    """The binary list whose count starts at data[pos:] (`N\n(` raw bytes
+    `)`): a numpy array ((n,) or (n, 3)) and the offset after it."""
+    m = re.compile(rb"\s*(\d+)\s*\(").match(data, pos)
+    n = int(m.group(1))
+    label, scalar = binary_arch(head)
+    dt, ncomp = {"label": (label, 1), "scalar": (scalar, 1),
+                 "vector": (scalar, 3)}[kind]
+    a = np.frombuffer(data, dt, n * ncomp, m.end())
+    end = m.end() + a.nbytes
+    if data[end:end + 1] != b")":
+        raise ValueError("malformed binary list")
+    a = a.astype(np.int64 if kind == "label" else float)
+    return (a.reshape(n, 3) if ncomp == 3 else a), end + 1
+
+
+def list_body(a, fmt):
+    """ASCII list body of a (n,) or (n, 3) array: `N{value}` when every
+    entry is the same (OpenFOAM reads it as a uniform list), else `N(...)`
+    with one entry per line formatted by fmt (%.17g: exact)."""
+    a = np.asarray(a)
+    n = len(a)
+    row = fmt if a.ndim == 1 else "(" + " ".join([fmt] * a.shape[1]) + ")"
+    if n > 1 and (a == a[0]).all():
+        return f"{n}{{{row % tuple(np.atleast_1d(a[0]).tolist())}}}"
+    body = (row + "\n") * n % tuple(a.ravel().tolist())
+    return f"{n}\n(\n{body})"
+
+
+def _skip_comments(text, pos):
+    """The offset of the first token at or after pos (white space, // and
+    /* */ comments skipped)."""
+    n = len(text)
+    while pos < n:
+        if text[pos].isspace():
+            pos += 1
+        elif text.startswith("//", pos):
+            end = text.find("\n", pos)
+            pos = n if end < 0 else end + 1
+        elif text.startswith("/*", pos):
+            pos = text.index("*/", pos) + 2
+        else:
+            break
+    return pos
+
+
+def ascii_list(text, pos=0):
+    """The ASCII list that starts at text[pos:] (after white space and
+    comments) as a numpy array: `N{value}` (uniform), `N(...)` or `(...)`
+    of numbers or of `(x y z)` vectors, on one line or many; comments only
+    outside the list (as OpenFOAM writes them). The numbers are split
+    once (no per-entry parsing in Python)."""
+    pos = _skip_comments(text, pos)
+    m = re.compile(r"(?:(\d+)\s*)?([({])").match(text, pos)
+    if not m or (m.group(1) is None and m.group(2) == "{"):
+        raise ValueError(f"no list at offset {pos}")
+    n = None if m.group(1) is None else int(m.group(1))   # `(...)`: counted
+    if m.group(2) == "{":                   # uniform list N{value}
+        v = text[m.end():text.index("}", m.end())].strip()
+        if v.startswith("("):
+            return np.tile([float(c) for c in v.strip("()").split()],
+                           (n, 1))
+        return np.full(n, float(v))
+    if n == 0:
+        return np.zeros(0)
+    start = m.end()
+    first = _skip_comments(text, start)
+    if text.startswith("(", first):         # a list of (x y z)
+        end = re.compile(r"\)\s*\)").search(text, first).end() - 1
+        flat = np.array(text[start:end].replace("(", " ")
+                        .replace(")", " ").split(), float)
+        return flat.reshape(n if n is not None else -1, 3)
+    return np.array(text[start:text.index(")", start)].split(), float)
+
+
+def read_list_file(path):
+    """A lagrangian IOField or a plain list file (labelList, vectorField:
+    cellProcAddressing, points), ASCII or binary, as a numpy array ((n,)
+    or (n, 3))."""
+    data = Path(path).read_bytes()
+    hend = data.index(b"}") + 1
+    head = data[:hend]
+    if is_binary(head):
+        cls = re.search(rb"class\s+(\S+);", head).group(1).decode()
+        kind = ("vector" if "vector" in cls.lower() else
+                "label" if "label" in cls.lower() else "scalar")
+        body = re.compile(rb"(\s|//[^\n]*)*").match(data, hend).end()
+        m = re.compile(rb"(\d+)\s*\{").match(data, body)
+        if m:  # uniform list N{raw value}
+            label, scalar = binary_arch(head)
+            dt = label if kind == "label" else scalar
+            v = np.frombuffer(data, dt, 3 if kind == "vector" else 1,
+                              m.end()).astype(float)
+            n = int(m.group(1))
+            if kind == "vector":
+                return np.tile(v, (n, 1))
+            return np.full(n, v[0])
+        return binary_list(data, body, kind, head)[0]
+    return ascii_list(data.decode(), hend)

@@ -1,0 +1,56 @@
+"""Off-screen pyvista pictures of particle fields.
+
+Without a display (DISPLAY unset) VTK is told to render with OSMesa
+straight away: it would otherwise try X first and print its "bad X server
+connection" warning into the user's terminal before falling back to the
+same OSMesa window."""
+
+import os
+
+import numpy as np
+
+
+def _offscreen_window():
+    if not os.environ.get("DISPLAY"):
+        os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW",
+                              "vtkOSOpenGLRenderWindow")
+
+
+def particles_picture(path, positions, colour, bounds, title="",
+                      colour_name="primaries per agglomerate",
+                      single_size=2.0, cluster_size=9.0, camera=None,
+                      window=(1600, 1000)):
+    """Render particles at positions as points coloured by colour (the
+    number of primaries): single primaries (colour 1) as small grey points,
+    agglomerates as large points on a colour scale; the box outline is given
+    by bounds (xmin, xmax, ymin, ymax, zmin, zmax). Writes a PNG file."""
+    _offscreen_window()
+    import pyvista as pv
+    pv.OFF_SCREEN = True
+
+    x = np.asarray(positions, float)
+    c = np.asarray(colour)
+    pl = pv.Plotter(off_screen=True, window_size=list(window))
+    pl.set_background("white")
+    pl.add_mesh(pv.Box(bounds=bounds).outline(), color="black")
+    single = c <= 1
+    if single.any():
+        pl.add_mesh(pv.PolyData(x[single]), color="lightgrey",
+                    point_size=single_size, render_points_as_spheres=True)
+    if (~single).any():
+        pts = pv.PolyData(x[~single])
+        pts[colour_name] = c[~single].astype(float)
+        pl.add_mesh(pts, scalars=colour_name, cmap="plasma",
+                    clim=[2, max(3, int(c.max()))], point_size=cluster_size,
+                    render_points_as_spheres=True,
+                    scalar_bar_args={"title": colour_name,
+                                     "color": "black"})
+    if title:
+        pl.add_text(title, font_size=11, color="black")
+    if camera:
+        pl.camera_position = camera
+    else:
+        pl.view_isometric()
+        pl.camera.zoom(1.2)
+    pl.screenshot(str(path))
+    pl.close()

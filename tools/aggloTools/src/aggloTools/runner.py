@@ -1,0 +1,64 @@
+"""Running OpenFOAM and project executables from Python: the project
+folder, an executable found on PATH (etc/bashrc sourced), and a command
+run in a case folder with its log kept."""
+
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+
+class CommandError(RuntimeError):
+    """A command that could not be found or that failed."""
+
+
+def project_dir():
+    """The project folder: $AGGLO_PROJECT_DIR (set by etc/bashrc), else
+    the checkout that holds this package."""
+    env = os.environ.get("AGGLO_PROJECT_DIR")
+    return Path(env) if env else Path(__file__).resolve().parents[4]
+
+
+def foam_bin(name):
+    """Path of an OpenFOAM or project executable; a clear error if it is
+    not on PATH."""
+    path = shutil.which(name)
+    if path is None:
+        raise CommandError(
+            f"'{name}' not found on PATH: source etc/bashrc and build the "
+            "project (./Allwmake), or run the tests through ./Alltest")
+    return path
+
+
+def run(cmd, cwd, log, check=True, timeout=600):
+    """Run cmd in cwd, write stdout+stderr to cwd/log and return the
+    CompletedProcess; with check, a non-zero exit raises CommandError
+    with the end of the output."""
+    env = dict(os.environ, PWD=str(cwd))
+    res = subprocess.run(
+        [str(c) for c in cmd], cwd=cwd, stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT, text=True, timeout=timeout, env=env)
+    (Path(cwd) / log).write_text(res.stdout)
+    if check and res.returncode != 0:
+        raise CommandError(
+            f"{' '.join(map(str, cmd))} failed (rc {res.returncode}) in "
+            f"{cwd}:\n{res.stdout[-3000:]}")
+    return res
+
+
+def tutorial_module(tutorial, script):
+    """A tutorial's Python script (tutorials/<tutorial>/<script>.py of the
+    project) imported as the module `script`, for the tests and benchmarks
+    that call its functions; a script that imports a sibling must be
+    loaded after it."""
+    import importlib.util
+    import sys
+    path = project_dir() / "tutorials" / tutorial / f"{script}.py"
+    if script in sys.modules and \
+            getattr(sys.modules[script], "__file__", None) == str(path):
+        return sys.modules[script]
+    spec = importlib.util.spec_from_file_location(script, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[script] = module
+    spec.loader.exec_module(module)
+    return module

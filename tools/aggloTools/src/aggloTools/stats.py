@@ -1,0 +1,60 @@
+"""The outputs of the hardSphereStatistics cloud function object:
+stats.dat (joined over restarts), profiles.dat and agglomerateSizes.dat."""
+
+from pathlib import Path
+
+import numpy as np
+
+
+def read_stats(case, cloud="kinematicCloud"):
+    """The rows of postProcessing/<cloud>HardSphere/<t>/stats.dat as a dict
+    of numpy arrays. Restarted runs write a new start-time folder; the rows
+    are joined in time order (later folders win at equal times)."""
+    base = Path(case) / "postProcessing" / f"{cloud}HardSphere"
+    cols, rows = None, []
+    for sub in sorted(base.iterdir(), key=lambda p: float(p.name)):
+        f = sub / "stats.dat"
+        if not f.exists():
+            continue
+        t0 = float(sub.name)
+        rows = [r for r in rows if r[0] <= t0 + 1e-12 * max(1, abs(t0))]
+        for line in f.read_text().splitlines():
+            if line.startswith("# Time"):
+                cols = line[2:].split()
+            elif line and not line.startswith("#"):
+                rows.append([float(c) for c in line.split()])
+    if cols is None:
+        raise FileNotFoundError(f"no stats.dat under {base}")
+    arr = np.array(rows)
+    return {c: arr[:, i] for i, c in enumerate(cols)}
+
+
+
+
+def stats_rows(case, cloud="kinematicCloud"):
+    """read_stats as a list of rows, each a dict column -> value."""
+    st = read_stats(case, cloud)
+    cols = list(st)
+    return [dict(zip(cols, map(float, r)))
+            for r in zip(*(st[c] for c in cols))]
+
+
+def last_output(case, cloud, name):
+    """The file `name` (profiles.dat, agglomerateSizes.dat) of the latest
+    start-time folder of postProcessing/<cloud>HardSphere, or None."""
+    base = Path(case) / "postProcessing" / f"{cloud}HardSphere"
+    files = sorted(base.glob(f"*/{name}"), key=lambda f: float(f.parent.name))
+    return files[-1] if files else None
+
+
+def read_table(path):
+    """The columns of agglomerateSizes.dat or profiles.dat (header line
+    '# k ...' or '# x ...') as a dict of numpy arrays."""
+    cols, rows = None, []
+    for line in Path(path).read_text().splitlines():
+        if line.startswith(("# x ", "# k ")):
+            cols = line[2:].split()
+        elif line and not line.startswith("#"):
+            rows.append([float(c) for c in line.split()])
+    a = np.array(rows) if rows else np.zeros((0, len(cols)))
+    return {c: a[:, i] for i, c in enumerate(cols)}
