@@ -37,6 +37,11 @@ step. Then the shear ghost case (shearFlowValidation `ci` geometry,
 Usage (after ./Allwmake; about 9 minutes on one core of the development
 machine, peak memory about 2 GB):
     source etc/bashrc && .venv/bin/python bench/hardSphereCloud.py [N ...]
+
+The cost of the collision-event log (doc/eventLog.md): the collision
+stage of the same case with eventLog off and on, alternating, two runs
+each (about 2 minutes at 1e5):
+    .venv/bin/python bench/hardSphereCloud.py eventLog [N]
 """
 
 import math
@@ -119,15 +124,18 @@ def make_case(case, N, density, search="particleGrid", particles=True):
     return nc**3
 
 
-def as_variant(src, dst, search=None, stock=False):
-    """A copy of a written case with another search, or for the stock
-    cloud (same particles, mesh, fluid and forces)."""
+def as_variant(src, dst, search=None, stock=False, log=False):
+    """A copy of a written case with another search, with the collision
+    event log on, or for the stock cloud (same particles, mesh, fluid and
+    forces)."""
     shutil.rmtree(dst, ignore_errors=True)
     shutil.copytree(src, dst)
     props = dst / "constant" / "kinematicCloudProperties"
     text = props.read_text()
     if search:
         text = re.sub(r"pairSearch \w+;", f"pairSearch {search};", text)
+    if log:
+        text = re.sub(r"(pairSearch \w+;)", r"\1 eventLog true;", text)
     if stock:
         text = text[:text.index("solution")] + STOCK_PROPERTIES
     props.write_text(text)
@@ -266,11 +274,46 @@ def ghost(dt_gamma, steps=400):
     return dict(zip(("track", "stage", "rest"), out), step=out.sum())
 
 
+def event_log(N, repeats=2):
+    """The collision stage with the event log off and on (same case,
+    alternating runs): per particle-step [us] and the log's bytes per
+    event."""
+    tag = f"N{N}_log"
+    off, on = WORK / f"{tag}_off", WORK / f"{tag}_on"
+    make_case(off, N, 1)
+    as_variant(off, on, log=True)
+    stage = {"off": [], "on": []}
+    for _ in range(repeats):
+        for name, c in (("off", off), ("on", on)):
+            shutil.rmtree(c / "postProcessing", ignore_errors=True)
+            run(c)
+            t = ours_times(c)
+            stage[name].append(1e6 * t[1:, 1].sum() / (N * (len(t) - 1)))
+    logs = list((on / "postProcessing").glob("*CollisionEvents/*.bin"))
+    size = sum(f.stat().st_size - 128 for f in logs)
+    events = size // 220
+    for c in (off, on):
+        shutil.rmtree(c, ignore_errors=True)
+    return dict(off=min(stage["off"]), on=min(stage["on"]), runs=stage,
+                events=events, bytes=size / max(events, 1))
+
+
 def verdict(ok):
     return "met" if ok else "MISSED"
 
 
 def main():
+    if sys.argv[1:2] == ["eventLog"]:
+        N = int(float(sys.argv[2])) if len(sys.argv) > 2 else 100000
+        r = event_log(N)
+        print(f"collision event log, N = {N:g} at the paper's density: "
+              f"collision stage {r['off']:.3f} us per particle-step off, "
+              f"{r['on']:.3f} on (on/off {r['on']/r['off']:.2f}; best of "
+              f"{len(r['runs']['off'])} alternating runs: off "
+              + ", ".join(f"{v:.3f}" for v in r["runs"]["off"]) + "; on "
+              + ", ".join(f"{v:.3f}" for v in r["runs"]["on"]) + "); "
+              f"{r['events']} events logged, {r['bytes']:.0f} B each")
+        return
     Ns = [int(float(a)) for a in sys.argv[1:]] or [10000, 100000, 1000000]
     results = []
     print(f"{'n/n_paper':>9} {'N':>8} {'cells':>7} | per particle-step "

@@ -75,9 +75,10 @@ def decay_theory(np0, dncol, np_sim, alpha, form="consistent"):
 # ---------------------------------------------------------------- settings
 
 PRESET_KEYS = {"nx", "LxByDelta", "nParticles", "endGamma",
-               "detectEndGamma", "detectDtGamma", "writes"}
+               "detectEndGamma", "detectDtGamma", "writes", "eventLog"}
 COMMON_KEYS = {"gammaDot", "delta", "LzByDelta", "ny", "nz", "dParticle",
-               "seed", "dtGamma", "detectDtGamma", "countFromGamma"}
+               "seed", "dtGamma", "detectDtGamma", "countFromGamma",
+               "eventLog"}
 
 
 def presets():
@@ -87,6 +88,12 @@ def presets():
         check_keys(p, COMMON_KEYS if name == "common"
                           else PRESET_KEYS, f"presets/{name}")
     return ps
+
+
+def on_off(v, where):
+    if v not in ("on", "off"):
+        raise SystemExit(f"{where} '{v}' is not one of: on off")
+    return v
 
 
 def settings(preset, run):
@@ -121,6 +128,8 @@ def settings(preset, run):
         "countFrom": float(c["countFromGamma"]) / gamma,
         "agglomerationModel": model,
         "collisionResponse": "ghost" if detect else "physical",
+        "eventLog": on_off(p.get("eventLog", c["eventLog"]),
+                           f"presets/{preset}: eventLog"),
     }
 
 
@@ -138,7 +147,8 @@ def settings_text(s):
 SETTINGS_KEYS = {"preset", "run", "gammaDot", "delta", "yMin", "uWall",
                  "uLower", "Lx", "Lz", "nx", "ny", "nz", "nParticles",
                  "dParticle", "seed", "deltaT", "endTime", "writeInterval",
-                 "countFrom", "agglomerationModel", "collisionResponse"}
+                 "countFrom", "agglomerationModel", "collisionResponse",
+                 "eventLog"}
 
 
 def read_settings(case):

@@ -65,7 +65,7 @@ def _nums(v):
 
 COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
                "ddtScheme", "seed", "writeFormat", "writePositions",
-               "purgeWrite"}
+               "purgeWrite", "eventLog"}
 PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "unladen", "release", "dispersion", "agglomeration", "window",
                "writeStar", "profileBins", "seededPairs"} | COMMON_KEYS
@@ -103,7 +103,7 @@ def preset(name):
     p["deltaT"] = p["dtStar"] * p["tScale"]
     p["L"] = (2 * PI * p["delta"], 2 * p["delta"], PI * p["delta"])
     choices = {"writeFormat": ("ascii", "binary"),
-               "writePositions": ("on", "off")}
+               "writePositions": ("on", "off"), "eventLog": ("on", "off")}
     for key, valid in choices.items():
         if p[key] not in valid:
             sys.exit(f"channel.py: presets/{name}: {key} '{p[key]}' is not"
@@ -235,6 +235,9 @@ profileBins     {p['profileBins']};
 // no agglomeration), then one cloud per agglomeration model
 clouds          {clouds};
 
+// The collision-event log of the agglomeration stage (doc/eventLog.md)
+eventLog        {p['eventLog'] if stage == 'agglomeration' else 'off'};
+
 // ************************************************************************* //
 """
 
@@ -248,7 +251,7 @@ SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
                  "dParticle", "nParticles", "seed", "subModels", "coupled",
                  "couplingScale", "cloudForces", "dispersionModel",
                  "enParticle", "wallType", "wallCoeffs", "profileBins",
-                 "clouds"}
+                 "clouds", "eventLog"}
 
 
 def read_settings(case):

@@ -11,6 +11,7 @@ import json
 import math
 import re
 import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -43,10 +44,10 @@ N_BATCH = 10
 
 # ------------------------------------------------------------------ runs
 
-def run_dirs(pname):
+def run_dirs(pname, base=None):
     """(config, model) -> (case directory, cloud name) of the finished
-    agglomeration stages of a preset."""
-    base = HERE / "runs" / pname
+    agglomeration stages of a preset (under runs/PRESET, or base)."""
+    base = Path(base) if base else HERE / "runs" / pname
     out = {}
     if not base.exists():
         return out

@@ -139,3 +139,28 @@ def test_ci_conservation_and_decay(ci_results):
         assert r["N_col"] > 10 * r["N_col_first"]
     rows = {r["check"]: r for r in s["regression"]}
     assert all(r["status"] != "FAIL" for r in rows.values())
+
+
+def test_ci_replay_of_the_event_logs(ci_results):
+    """shearReplay.py (doc/eventLog.md): every run's log holds its first
+    contacts; the EAM and MAM runs' own kernels (e_n 0.97) agglomerate on
+    replay as often as the runs' first contacts did, and a lower e_n never
+    agglomerates less often on the same collisions (EAM: less rebound
+    energy; MAM: a larger cohesive share)."""
+    _, s, tut = ci_results
+    rep = json.loads((tut / "results/ci/replay.json").read_text())
+    assert sorted(rep["ensembles"]) == ["EAM", "MAM", "detect"]
+    for name in ("EAM", "MAM"):
+        res = rep["ensembles"][name]
+        own = res["configurations"][0]
+        assert own["events"] == s["runs"][name]["N_col_first"]
+        assert own["compared"] == own["matches"] == own["events"]
+        conf = {c["name"]: c for c in res["configurations"]}
+        assert conf[f"{name}097"]["agglomerations"] == \
+            s["runs"][name]["N_agg_first"]
+    det = rep["ensembles"]["detect"]
+    conf = {c["name"]: c for c in det["configurations"]}
+    for m in ("EAM", "MAM"):
+        a = [conf[f"{m}{e}"]["agglomerations"] for e in ("097", "080", "060")]
+        assert a[0] <= a[1] <= a[2], (m, a)
+

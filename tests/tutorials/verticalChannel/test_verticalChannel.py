@@ -43,7 +43,8 @@ def run_smoke(tmp, np_):
         shutil.rmtree(case)
     case.mkdir(parents=True)
     for name in ("0.orig", "constant", "system", "presets", "channel.py",
-                 "channelPost.py", "Allrun", "Allclean"):
+                 "channelPost.py", "channelReplay.py", "Allrun",
+                 "Allclean"):
         src = TUTORIAL / name
         (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)
     res = subprocess.run(
@@ -114,6 +115,30 @@ def test_statistics_complete_and_consistent(smoke_runs, np_):
             (math.pi / 6 * dfin**3).sum() / (Lx * Ly * Lz), rel=0.01)
     summary = json.loads((case / "results/smoke/summary.json").read_text())
     assert not [r for r in summary["regression"] if r["status"] == "FAIL"]
+
+
+@pytest.mark.parametrize("np_", [1, 2])
+def test_replay_of_the_event_logs(smoke_runs, np_):
+    """channelReplay.py (doc/eventLog.md): each agglomeration cloud's log
+    holds its first contacts (the statistics' count); replayed with the
+    run's own kernel they agglomerate as often as the run's first
+    contacts did, every logged outcome reproduced; EAM at e_n 0.97 is the
+    run's kernel for the EAM clouds."""
+    case = smoke_runs[np_]
+    rep = json.loads((case / "results/smoke/replay.json").read_text())
+    assert sorted(rep["ensembles"]) == ["C1 EAM", "C1 MAM", "C2 EAM",
+                                        "C2 MAM"]
+    for (c, m), adir in agg_runs(case).items():
+        st = read_stats(adir, m)
+        res = rep["ensembles"][f"{c} {m}"]
+        own = res["configurations"][0]
+        assert own["name"] == "run"
+        assert own["events"] == st["nColFirst"][-1] > 0
+        assert own["compared"] == own["matches"] == own["events"]
+        assert own["agglomerations"] == st["nAggFirst"][-1]
+        conf = {r["name"]: r for r in res["configurations"]}
+        same = conf[f"{m}097"]
+        assert same["agglomerations"] == own["agglomerations"]
 
 
 @pytest.mark.parametrize("np_", [1, 2])

@@ -163,6 +163,7 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     noOccupancy_(),
     schedule_(),
     candidates_(),
+    log_(nullptr),
     period_(GREAT, GREAT, GREAT)
 {
     setPeriods();
@@ -173,7 +174,7 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
     ({
         "overlapTreatment", "encounterMemory", "encounterRelease",
         "collisionResponse", "interactionDistance", "pairSearch",
-        "pairSearchCheck"
+        "pairSearchCheck", "eventLog"
     });
     valid.append(hardSphereWallInteraction::keys());
     valid.append(hardSphereCollisionKernel::keys(this->coeffDict()));
@@ -247,6 +248,11 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
             << " applying them: set agglomerationModel none (it is "
             << kernel_.agglomeration().type() << ")"
             << exit(FatalIOError);
+    }
+
+    if (this->coeffDict().template getOrDefault<bool>("eventLog", false))
+    {
+        log_.reset(new collisionEventLog(owner.mesh(), owner.name()));
     }
 
     Info<< "    overlapTreatment "
@@ -460,6 +466,12 @@ void Foam::HardSphereCollision<CloudType>::collide()
             p.position0() = x1[i];
             p.setStatus(parcelType::POSITION_KNOWN);
         }
+    }
+
+    // The log goes with the written state
+    if (log_.valid() && cloud.db().time().writeTime())
+    {
+        log_->flush();
     }
 }
 

@@ -115,6 +115,28 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
                 (
                     c.category, contactPoint(xci, pi.d(), xcj), nullptr
                 );
+                if (log_.valid())
+                {
+                    const hardSphereState si
+                    (
+                        xci, pi.U(), pi.omega(), pi.d(), pi.rho(),
+                        pi.nPrimary()
+                    );
+                    const hardSphereState sj
+                    (
+                        xcj, pj.U(), pj.omega(), pj.d(), pj.rho(),
+                        pj.nPrimary()
+                    );
+                    log_->record
+                    (
+                        c.iLow ? si : sj, c.iLow ? sj : si,
+                        c.iLow ? labelPair(idI[0], idI[1])
+                               : labelPair(idJ[0], idJ[1]),
+                        c.iLow ? labelPair(idJ[0], idJ[1])
+                               : labelPair(idI[0], idI[1]),
+                        c.category, s, pi.cell(), nullptr
+                    );
+                }
             }
 
             pi.lastPartnerProc() = idJ[0];
@@ -154,13 +176,24 @@ void Foam::HardSphereCollision<CloudType>::applyEvents
 
         kernel_.collide(s1, s2, outcome);
 
-        // Counted once: where the lower-id partner is real
+        // Counted (and logged) once: where the lower-id partner is real
         if (c.iLow || pjRealPtr)
         {
             step.count
             (
                 c.category, contactPoint(s1.x, s1.d, s2.x), &outcome
             );
+            if (log_.valid())
+            {
+                const globalId& id1 = c.iLow ? idI : idJ;
+                const globalId& id2 = c.iLow ? idJ : idI;
+                log_->record
+                (
+                    s1, s2, labelPair(id1[0], id1[1]),
+                    labelPair(id2[0], id2[1]), c.category, s, pi.cell(),
+                    &outcome
+                );
+            }
         }
 
         if (outcome.agglomerates)

@@ -1,0 +1,500 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+Application
+    hardSphereReplay
+
+Group
+    grpLagrangianUtilities
+
+Description
+    Replays the collision-event log of a run (hardSphereCoeffs: eventLog
+    true; doc/eventLog.md) through one or several collision kernels: the
+    same pre-collision states, any agglomeration model, restitution
+    coefficient or option, without running the flow again. Prints a table
+    and writes JSON: per configuration the events, agglomerations, alpha
+    with its 95 % Wilson interval and the branch counts; for every other
+    configuration the paired comparison with the first (or -base NAME):
+    events agglomerating under one and not the other, the ratio of the
+    alphas with its paired 95 % interval.
+
+    Without kernel dictionaries the run's own kernel (the cloud's
+    hardSphereCoeffs) is replayed, and every event's branch, collision type
+    and agglomeration are compared with what the run logged (-check: exit
+    1 on any difference). A kernel dictionary holds the kernel entries of
+    hardSphereCollide's input (material, particleCollision,
+    agglomerationModel, structureModel, their Coeffs, capAgglomerateSpin);
+    its file name names the configuration. A variants dictionary
+    (-variants) names configurations that change the run's kernel, each
+    merged into it:
+    \verbatim
+    EAM080 { agglomerationModel EAM; particleCollision { en 0.80; } }
+    MAM080 { agglomerationModel MAM; particleCollision { en 0.80; } }
+    \endverbatim
+
+    The replay freezes the collision ensemble: what a changed outcome
+    would do to later collisions and to the flow is not included.
+
+Usage
+    hardSphereReplay [-case DIR] [-cloud NAME] [-events all|first]
+        [-json FILE] [-check] [-variants FILE] [-base NAME]
+        [kernelDict ...]
+
+    The logs are read from postProcessing/<cloud>CollisionEvents of the
+    case (events<rank>.bin: serial and decomposed runs alike).
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "hardSphereCollisionKernel.H"
+#include "hardSphereInput.H"
+#include "binaryCollision.H"
+#include "collisionEventFile.H"
+#include "collisionEventLog.H"
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+const scalar NaN = std::numeric_limits<scalar>::quiet_NaN();
+
+//- The counts of one configuration
+struct replayResult
+{
+    word name;
+    fileName source;
+    label events = 0;
+    label agglomerations = 0;
+    label notApproaching = 0;
+    List<label> branches = List<label>(collisionOutcome::nBranches, 0);
+    label compared = 0;
+    label matches = 0;
+    List<bool> agglomerated;
+};
+
+
+std::string num(const scalar v)
+{
+    if (!std::isfinite(v))
+    {
+        return "null";
+    }
+    std::ostringstream os;
+    os << std::setprecision(10) << v;
+    return os.str();
+}
+
+
+//- 95 % Wilson score interval of k successes in n trials
+void wilson(const label k, const label n, scalar& lo, scalar& hi)
+{
+    if (n == 0)
+    {
+        lo = hi = NaN;
+        return;
+    }
+    const scalar z = 1.959963984540054;
+    const scalar p = scalar(k)/n;
+    const scalar den = 1 + z*z/n;
+    const scalar mid = (p + z*z/(2*n))/den;
+    const scalar half = z*std::sqrt(p*(1 - p)/n + z*z/(4*n*n))/den;
+    lo = max(0, mid - half);
+    hi = min(1, mid + half);
+}
+
+
+//- Replay the events through a kernel
+replayResult replay
+(
+    const word& name,
+    const fileName& source,
+    const dictionary& kernelDict,
+    const UList<collisionEvent>& events,
+    const bool compare
+)
+{
+    const hardSphereCollisionKernel kernel(kernelDict);
+    replayResult r;
+    r.name = name;
+    r.source = source;
+    r.agglomerated.setSize(events.size(), false);
+    collisionOutcome outcome;
+    forAll(events, k)
+    {
+        const collisionEvent& e = events[k];
+        ++r.events;
+        if (!binaryCollision(e.p1, e.p2).approaching())
+        {
+            // A ghost contact can be separating: nothing to resolve
+            ++r.notApproaching;
+            continue;
+        }
+        kernel.collide(e.p1, e.p2, outcome);
+        ++r.branches[outcome.branch];
+        if (outcome.agglomerates)
+        {
+            ++r.agglomerations;
+            r.agglomerated[k] = true;
+        }
+        if (compare && e.branch != collisionEvent::ghostBranch)
+        {
+            ++r.compared;
+            if
+            (
+                e.branch == outcome.branch
+             && e.agglomerates == outcome.agglomerates
+             && e.type == outcome.type
+            )
+            {
+                ++r.matches;
+            }
+        }
+    }
+    return r;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Replay a run's collision-event log through collision kernels"
+    );
+    argList::noParallel();
+    argList::noMandatoryArgs();
+    argList::addArgument("kernelDict ...");
+    argList::addOption("cloud", "name", "the cloud (kinematicCloud)");
+    argList::addOption
+    (
+        "events", "all|first", "the events replayed (all)"
+    );
+    argList::addOption("json", "file", "JSON output (replay.json in the"
+        " log folder)");
+    argList::addBoolOption
+    (
+        "check", "exit 1 unless the run's kernel reproduces every event"
+    );
+    argList::addOption
+    (
+        "variants", "file", "configurations that change the run's kernel"
+    );
+    argList::addOption
+    (
+        "base", "name", "the configuration the others are paired with"
+        " (the first)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const word cloudName(args.getOrDefault<word>("cloud", "kinematicCloud"));
+    const word which(args.getOrDefault<word>("events", "all"));
+    if (which != "all" && which != "first")
+    {
+        FatalErrorInFunction
+            << "-events " << which << " is not valid; valid choices:"
+            << " (all first)" << exit(FatalError);
+    }
+
+    // The logs, in a deterministic order
+    const fileName dir(collisionEventLog::folder(runTime, cloudName));
+    fileNameList files(readDir(dir, fileName::FILE));
+    DynamicList<collisionEvent> events;
+    label nFiles = 0;
+    Foam::sort(files);
+    for (const fileName& f : files)
+    {
+        if (f.hasExt("bin") && f.startsWith("events"))
+        {
+            for (const collisionEvent& e : collisionEventFile::read(dir/f))
+            {
+                if (which == "all" || e.category == 0)
+                {
+                    events.append(e);
+                }
+            }
+            ++nFiles;
+        }
+    }
+    if (!nFiles)
+    {
+        FatalErrorInFunction
+            << "No collision event log in " << dir << nl
+            << "(run the case with eventLog true; in hardSphereCoeffs)"
+            << exit(FatalError);
+    }
+    std::stable_sort
+    (
+        events.begin(), events.end(),
+        [](const collisionEvent& a, const collisionEvent& b)
+        {
+            if (a.timeIndex != b.timeIndex) return a.timeIndex < b.timeIndex;
+            if (a.time != b.time) return a.time < b.time;
+            if (a.proc[0] != b.proc[0]) return a.proc[0] < b.proc[0];
+            if (a.id[0] != b.id[0]) return a.id[0] < b.id[0];
+            if (a.proc[1] != b.proc[1]) return a.proc[1] < b.proc[1];
+            return a.id[1] < b.id[1];
+        }
+    );
+
+    // The configurations: the run's kernel (and its variants) unless
+    // kernel dictionaries are given
+    List<replayResult> results;
+    if (args.size() <= 1 || args.found("variants"))
+    {
+        const IOdictionary props
+        (
+            IOobject
+            (
+                cloudName + "Properties", runTime.constant(), runTime,
+                IOobject::MUST_READ, IOobject::NO_WRITE, false
+            )
+        );
+        const dictionary& coeffs =
+            props.subDict("subModels").subDict("hardSphereCoeffs");
+        dictionary runKernel;
+        for (const word& key : hardSphereCollisionKernel::keys(coeffs))
+        {
+            if (coeffs.found(key))
+            {
+                runKernel.add(coeffs.lookupEntry(key, keyType::LITERAL));
+            }
+        }
+        results.append
+        (
+            replay("run", props.objectPath(), runKernel, events, true)
+        );
+        if (args.found("variants"))
+        {
+            const fileName f(args.get<fileName>("variants"));
+            IFstream is(f);
+            if (!is.good())
+            {
+                FatalErrorInFunction
+                    << "Cannot read the variants dictionary " << f
+                    << exit(FatalError);
+            }
+            const dictionary variants(is);
+            for (const entry& v : variants)
+            {
+                if (!v.isDict())
+                {
+                    FatalIOErrorInFunction(variants)
+                        << "Variant " << v.keyword() << " is not a"
+                        << " dictionary of kernel entries"
+                        << exit(FatalIOError);
+                }
+                dictionary kd(runKernel);
+                kd.merge(v.dict());
+                hardSphereInput::checkKeys
+                (
+                    kd, hardSphereCollisionKernel::keys(kd)
+                );
+                results.append(replay(v.keyword(), f, kd, events, false));
+            }
+        }
+    }
+    for (label a = 1; a < args.size(); ++a)
+    {
+        const fileName f(args[a]);
+        IFstream is(f);
+        if (!is.good())
+        {
+            FatalErrorInFunction
+                << "Cannot read the kernel dictionary " << f
+                << exit(FatalError);
+        }
+        const dictionary dict(is);
+        hardSphereInput::checkKeys(dict, hardSphereCollisionKernel::keys(dict));
+        results.append(replay(f.nameLessExt(), f, dict, events, false));
+    }
+
+    // Table
+    Info<< nl << "hardSphereReplay: " << events.size() << " events ("
+        << which << ") of " << nFiles << " log file(s) in " << dir << nl
+        << nl;
+    {
+        std::ostringstream os;
+        os  << std::setw(20) << "configuration" << std::setw(9) << "events"
+            << std::setw(8) << "agg" << std::setw(14) << "alpha"
+            << "  95 % interval";
+        Info<< os.str().c_str() << nl;
+    }
+    for (const replayResult& r : results)
+    {
+        scalar lo, hi;
+        wilson(r.agglomerations, r.events, lo, hi);
+        std::ostringstream os;
+        os  << std::setw(20) << r.name << std::setw(9) << r.events
+            << std::setw(8) << r.agglomerations << std::setw(14)
+            << num(r.events ? scalar(r.agglomerations)/r.events : NaN)
+            << "  " << num(lo) << " - " << num(hi);
+        Info<< os.str().c_str() << nl;
+    }
+
+    // JSON
+    const fileName jsonFile
+    (
+        args.getOrDefault<fileName>("json", dir/"replay.json")
+    );
+    OFstream js(jsonFile);
+    js  << "{\n  \"case\": \"" << runTime.globalPath().c_str() << "\",\n"
+        << "  \"cloud\": \"" << cloudName.c_str() << "\",\n"
+        << "  \"logFiles\": " << nFiles << ",\n"
+        << "  \"selection\": \"" << which.c_str() << "\",\n"
+        << "  \"events\": " << events.size() << ",\n"
+        << "  \"configurations\": [\n";
+    forAll(results, c)
+    {
+        const replayResult& r = results[c];
+        scalar lo, hi;
+        wilson(r.agglomerations, r.events, lo, hi);
+        js  << "    {\"name\": \"" << r.name.c_str() << "\", \"source\": \""
+            << r.source.c_str() << "\", \"events\": " << r.events
+            << ", \"agglomerations\": " << r.agglomerations
+            << ", \"alpha\": "
+            << num(r.events ? scalar(r.agglomerations)/r.events : NaN).c_str()
+            << ", \"alphaLow\": " << num(lo).c_str()
+            << ", \"alphaHigh\": " << num(hi).c_str()
+            << ", \"notApproaching\": " << r.notApproaching
+            << ", \"branches\": {";
+        for (label b = 0; b < collisionOutcome::nBranches; ++b)
+        {
+            js  << (b ? ", " : "") << "\""
+                << collisionOutcome::branchTypeNames
+                   [collisionOutcome::branchType(b)].c_str()
+                << "\": " << r.branches[b];
+        }
+        js  << "}";
+        if (r.compared)
+        {
+            js  << ", \"compared\": " << r.compared << ", \"matches\": "
+                << r.matches;
+        }
+        js  << "}" << (c + 1 < results.size() ? "," : "") << "\n";
+    }
+    label base = 0;
+    if (args.found("base"))
+    {
+        const word name(args.get<word>("base"));
+        base = -1;
+        wordList names(results.size());
+        forAll(results, c)
+        {
+            names[c] = results[c].name;
+            if (results[c].name == name)
+            {
+                base = c;
+            }
+        }
+        if (base < 0)
+        {
+            FatalErrorInFunction
+                << "-base " << name << " is not a configuration; valid: "
+                << names << exit(FatalError);
+        }
+    }
+    js  << "  ],\n  \"base\": \"" << results[base].name.c_str()
+        << "\",\n  \"paired\": [\n";
+    if (results.size() > 1)
+    {
+        Info<< nl << "paired with " << results[base].name << ":" << nl;
+    }
+    label nPaired = 0;
+    forAll(results, c)
+    {
+        if (c == base)
+        {
+            continue;
+        }
+        const replayResult& A = results[base];
+        const replayResult& B = results[c];
+        label n11 = 0, n10 = 0, n01 = 0;
+        forAll(events, k)
+        {
+            n11 += A.agglomerated[k] && B.agglomerated[k];
+            n10 += A.agglomerated[k] && !B.agglomerated[k];
+            n01 += !A.agglomerated[k] && B.agglomerated[k];
+        }
+        // Ratio of two proportions on the same events (delta method)
+        const scalar a = n11 + n10, b = n11 + n01;
+        scalar ratio = NaN, lo = NaN, hi = NaN;
+        if (a > 0 && b > 0)
+        {
+            ratio = b/a;
+            const scalar s = std::sqrt((n10 + n01)/(a*b));
+            lo = ratio*std::exp(-1.959963984540054*s);
+            hi = ratio*std::exp(1.959963984540054*s);
+        }
+        Info<< "    " << B.name << ": differ on " << n10 + n01
+            << " events (" << n10 << " only " << A.name << ", " << n01
+            << " only " << B.name << "), alpha ratio " << num(ratio).c_str()
+            << " (" << num(lo).c_str() << " - " << num(hi).c_str() << ")" << nl;
+        js  << "    {\"a\": \"" << A.name.c_str() << "\", \"b\": \""
+            << B.name.c_str() << "\", \"both\": " << n11
+            << ", \"onlyA\": " << n10 << ", \"onlyB\": " << n01
+            << ", \"ratio\": " << num(ratio).c_str() << ", \"ratioLow\": "
+            << num(lo).c_str() << ", \"ratioHigh\": " << num(hi).c_str()
+            << "}" << (++nPaired + 1 < results.size() ? "," : "") << "\n";
+    }
+    js  << "  ]\n}\n";
+
+    bool ok = true;
+    for (const replayResult& r : results)
+    {
+        if (r.compared)
+        {
+            Info<< nl << r.name << ": " << r.matches << " of " << r.compared
+                << " logged outcomes reproduced (branch, collision type,"
+                << " agglomeration)" << nl;
+            ok = ok && r.matches == r.compared;
+        }
+    }
+    Info<< nl << "JSON: " << jsonFile << nl << "End" << nl << endl;
+
+    if (args.found("check") && !ok)
+    {
+        return 1;
+    }
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,167 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "collisionEvent.H"
+#include <cstring>
+#include <cstdint>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+template<class T>
+void put(char* buf, std::size_t& pos, const T v)
+{
+    std::memcpy(buf + pos, &v, sizeof(T));
+    pos += sizeof(T);
+}
+
+template<class T>
+T get(const char* buf, std::size_t& pos)
+{
+    T v;
+    std::memcpy(&v, buf + pos, sizeof(T));
+    pos += sizeof(T);
+    return v;
+}
+
+void putState(char* buf, std::size_t& pos, const Foam::hardSphereState& s)
+{
+    for (const Foam::vector* v : {&s.x, &s.U, &s.omega})
+    {
+        for (Foam::direction c = 0; c < 3; ++c)
+        {
+            put<double>(buf, pos, (*v)[c]);
+        }
+    }
+    put<double>(buf, pos, s.d);
+    put<double>(buf, pos, s.rho);
+}
+
+void getState(const char* buf, std::size_t& pos, Foam::hardSphereState& s)
+{
+    for (Foam::vector* v : {&s.x, &s.U, &s.omega})
+    {
+        for (Foam::direction c = 0; c < 3; ++c)
+        {
+            (*v)[c] = get<double>(buf, pos);
+        }
+    }
+    s.d = get<double>(buf, pos);
+    s.rho = get<double>(buf, pos);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const std::size_t Foam::collisionEvent::recordBytes;
+const Foam::label Foam::collisionEvent::ghostBranch;
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::collisionEvent::collisionEvent()
+:
+    timeIndex(0),
+    category(0),
+    branch(ghostBranch),
+    agglomerates(false),
+    type(collisionOutcome::STICKING),
+    time(0),
+    proc(-1),
+    id(-1),
+    p1(),
+    p2(),
+    wallDistance(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::collisionEvent::setOutcome(const collisionOutcome* outcome)
+{
+    if (outcome)
+    {
+        branch = outcome->branch;
+        agglomerates = outcome->agglomerates;
+        type = outcome->type;
+    }
+    else
+    {
+        branch = ghostBranch;
+        agglomerates = false;
+        type = collisionOutcome::STICKING;
+    }
+}
+
+
+void Foam::collisionEvent::pack(char* buf) const
+{
+    std::size_t pos = 0;
+    put<int32_t>(buf, pos, timeIndex);
+    put<uint8_t>(buf, pos, category);
+    put<uint8_t>(buf, pos, branch);
+    put<uint8_t>(buf, pos, agglomerates);
+    put<uint8_t>(buf, pos, type);
+    put<double>(buf, pos, time);
+    put<int32_t>(buf, pos, proc[0]);
+    put<int32_t>(buf, pos, id[0]);
+    put<int32_t>(buf, pos, proc[1]);
+    put<int32_t>(buf, pos, id[1]);
+    putState(buf, pos, p1);
+    putState(buf, pos, p2);
+    put<int32_t>(buf, pos, p1.nPrimary);
+    put<int32_t>(buf, pos, p2.nPrimary);
+    put<float>(buf, pos, wallDistance);
+}
+
+
+void Foam::collisionEvent::unpack(const char* buf)
+{
+    std::size_t pos = 0;
+    timeIndex = get<int32_t>(buf, pos);
+    category = get<uint8_t>(buf, pos);
+    branch = get<uint8_t>(buf, pos);
+    agglomerates = get<uint8_t>(buf, pos);
+    type = get<uint8_t>(buf, pos);
+    time = get<double>(buf, pos);
+    proc[0] = get<int32_t>(buf, pos);
+    id[0] = get<int32_t>(buf, pos);
+    proc[1] = get<int32_t>(buf, pos);
+    id[1] = get<int32_t>(buf, pos);
+    getState(buf, pos, p1);
+    getState(buf, pos, p2);
+    p1.nPrimary = get<int32_t>(buf, pos);
+    p2.nPrimary = get<int32_t>(buf, pos);
+    wallDistance = get<float>(buf, pos);
+}
+
+
+// ************************************************************************* //

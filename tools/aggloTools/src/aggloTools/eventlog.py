@@ -1,0 +1,147 @@
+"""The collision-event log of a run (hardSphereCoeffs: eventLog true;
+doc/eventLog.md): its records read into numpy, replays through kernel
+variants with the hardSphereReplay utility, and the plot of alpha against
+the restitution coefficient for EAM and MAM.
+
+    ev = read_events(case)                      # structured array
+    res = replay(case, {"EAM080": {"agglomerationModel": "EAM",
+                                   "particleCollision": {"en": 0.8}}})
+"""
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from .runner import foam_bin, run
+
+HEADER_BYTES = 128
+
+_STATE = [("x{k}", "<f8", 3), ("U{k}", "<f8", 3), ("omega{k}", "<f8", 3),
+          ("d{k}", "<f8"), ("rho{k}", "<f8")]
+
+#: One record (collisionEvent.H), little-endian
+DTYPE = np.dtype(
+    [("timeIndex", "<i4"), ("category", "u1"), ("branch", "u1"),
+     ("agglomerates", "u1"), ("type", "u1"), ("time", "<f8"),
+     ("proc1", "<i4"), ("id1", "<i4"), ("proc2", "<i4"), ("id2", "<i4")]
+    + [(n.format(k=1),) + tuple(t) for n, *t in _STATE]
+    + [(n.format(k=2),) + tuple(t) for n, *t in _STATE]
+    + [("nPrimary1", "<i4"), ("nPrimary2", "<i4"),
+       ("wallDistance", "<f4")])
+
+CATEGORIES = ("first", "repeat", "overlapStart")
+BRANCHES = ("rebound", "agglomerate", "Eq21", "Eq65", "caseI", "caseII",
+            "caseIIIRebound")
+GHOST = 255
+
+
+def folder(case, cloud="kinematicCloud"):
+    return Path(case) / "postProcessing" / f"{cloud}CollisionEvents"
+
+
+def read_file(path):
+    """The records of one events<rank>.bin file."""
+    data = Path(path).read_bytes()
+    head = data[:HEADER_BYTES].decode(errors="replace")
+    want = f"aggloCollisionEvents 1 recordBytes {DTYPE.itemsize} arch LSB"
+    if not head.startswith(want):
+        raise ValueError(f"{path}: not a collision event file of this"
+                         f" layout (header {head.strip()!r})")
+    body = len(data) - HEADER_BYTES
+    if body % DTYPE.itemsize:
+        raise ValueError(f"{path}: a partial record at the end (a write"
+                         " cut off; a restart of the run cuts it back)")
+    return np.frombuffer(data, DTYPE, body // DTYPE.itemsize, HEADER_BYTES)
+
+
+def read_events(case, cloud="kinematicCloud"):
+    """Every event of the case's logs (all ranks), in the order of the
+    replay: time index, contact time, then the ids."""
+    files = sorted(folder(case, cloud).glob("events*.bin"))
+    if not files:
+        raise FileNotFoundError(f"no collision event log in "
+                                f"{folder(case, cloud)}")
+    ev = np.concatenate([read_file(f) for f in files])
+    order = np.lexsort((ev["id2"], ev["proc2"], ev["id1"], ev["proc1"],
+                        ev["time"], ev["timeIndex"]))
+    return ev[order]
+
+
+def variants_text(variants):
+    """A variants dictionary of hardSphereReplay: name -> entries (nested
+    dicts for sub-dictionaries)."""
+    def body(d):
+        return " ".join(f"{k} {{ {body(v)} }}" if isinstance(v, dict)
+                        else f"{k} {v};" for k, v in d.items())
+    return "\n".join(f"{name} {{ {body(d)} }}" for name, d in
+                     variants.items()) + "\n"
+
+
+def replay(case, variants=None, cloud="kinematicCloud", events="all",
+           check=False, out=None, base=None):
+    """Run hardSphereReplay on the case: the run's own kernel and the
+    variants (name -> entries merged into it), the others paired with
+    base (default: the run's kernel); returns its JSON as a dict. out:
+    where the JSON goes (default: replay-<events>.json in the log
+    folder)."""
+    case = Path(case).resolve()
+    out = Path(out or folder(case, cloud) / f"replay-{events}.json")
+    cmd = [foam_bin("hardSphereReplay"), "-case", str(case), "-cloud",
+           cloud, "-events", events, "-json", str(out)]
+    if variants:
+        vfile = out.with_suffix(".variants")
+        vfile.write_text(variants_text(variants))
+        cmd += ["-variants", str(vfile)]
+    if check:
+        cmd.append("-check")
+    if base:
+        cmd += ["-base", base]
+    run(cmd, case, f"log.hardSphereReplay.{events}")
+    return json.loads(out.read_text())
+
+
+def en_variants(ens, models=("EAM", "MAM")):
+    """The variants of a restitution scan: <model><100 en>."""
+    return {f"{m}{round(100 * en):03d}": {
+        "agglomerationModel": m, "particleCollision": {"en": en}}
+        for m in models for en in ens}
+
+
+def plot_alpha_en(results, path, title, ens, models=("EAM", "MAM"),
+                  reference=None):
+    """alpha against e_n per model with the 95 % intervals, from the
+    replay results of en_variants (one log: the same collisions);
+    reference: (value, label) of a horizontal line (a theory)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    conf = {c["name"]: c for c in results["configurations"]}
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for k, m in enumerate(models):
+        rows = [conf[f"{m}{round(100 * en):03d}"] for en in ens]
+        a = np.array([r["alpha"] for r in rows], float)
+        lo = np.array([r["alphaLow"] for r in rows], float)
+        hi = np.array([r["alphaHigh"] for r in rows], float)
+        x = np.array(ens) + (k - 0.5) * 0.006
+        ax.errorbar(x, a, yerr=[a - lo, hi - a], marker="os"[k % 2],
+                    capsize=4, label=m)
+    if reference:
+        ax.axhline(reference[0], color="0.4", ls="--", label=reference[1])
+    ax.set_xlabel("restitution coefficient $e_n$")
+    ax.set_ylabel(r"$\alpha = N_{agg}/N_{col}$")
+    ax.set_title(title, fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def portable(res, case_name):
+    """A replay result without machine paths (for committed results):
+    the case as case_name, sources by file name."""
+    out = dict(res, case=case_name)
+    out["configurations"] = [dict(c, source=Path(c["source"]).name)
+                             for c in res["configurations"]]
+    return out

@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""shearFlowValidation: the collision-event logs of a preset's runs
+replayed through EAM and MAM at e_n = 0.97, 0.80 and 0.60 (doc/eventLog.md):
+alpha per first contact of each run's own first-contact ensemble, with
+95 % intervals, against van de Ven & Mason's alpha_th.
+
+    shearReplay.py PRESET     results/PRESET: replay.json, replay.txt,
+                              alphaReplay<run>.png (nothing without logs)
+
+The replay freezes each run's collisions: every first contact meets its
+partner as it did in the run, only the outcome is computed anew; what a
+changed outcome would do to later collisions is not included. The detect
+run's first contacts (ghost: particles pass through each other) are the
+undisturbed ensemble of the Saffman-Turner kernel."""
+
+import json
+import sys
+from pathlib import Path
+
+from aggloTools import eventlog, regression as reg
+
+import shearFlow
+
+HERE = Path(__file__).resolve().parent
+EN = (0.97, 0.80, 0.60)
+MODELS = ("EAM", "MAM")
+BASE = "EAM097"     # the paired comparisons are with EAM at e_n = 0.97
+
+
+def paired(p):
+    """The paired columns of a configuration (none for the base): the
+    events only the base / only this one agglomerates, and the ratio of
+    the alphas with its 95 % interval."""
+    if p is None:
+        return dict(only="(base)", ratio=None, ratioCI="")
+    ci = ("-" if p["ratioLow"] is None
+          else f"{p['ratioLow']:.3g}-{p['ratioHigh']:.3g}")
+    return dict(only=f"{p['onlyA']} / {p['onlyB']}", ratio=p["ratio"],
+                ratioCI=ci)
+
+
+def replay(preset, runs_dir=None, out_dir=None):
+    runs_dir = Path(runs_dir or HERE / "runs" / preset)
+    out = Path(out_dir or HERE / "results" / preset)
+    logs = [r for r in shearFlow.RUNS
+            if eventlog.folder(runs_dir / r).is_dir()]
+    if not logs:
+        print(f"shearReplay.py: no collision event logs under {runs_dir}")
+        return None
+    s = shearFlow.read_settings(runs_dir / logs[0])
+    a_th = float(shearFlow.alpha_th(float(s["dParticle"]),
+                                    float(s["gammaDot"])))
+    out.mkdir(parents=True, exist_ok=True)
+    summary = {"preset": preset, "en": list(EN), "alpha_th": a_th,
+               "events": "first contacts", "ensembles": {}}
+    rows = []
+    for r in logs:
+        res = eventlog.replay(runs_dir / r, eventlog.en_variants(EN, MODELS),
+                              events="first", base=BASE)
+        pairs = {p["b"]: p for p in res["paired"]}
+        res = eventlog.portable(res, f"runs/{preset}/{r}")
+        summary["ensembles"][r] = res
+        for c in res["configurations"][1:]:
+            rows.append(dict(ensemble=r, configuration=c["name"],
+                             events=c["events"], agg=c["agglomerations"],
+                             alpha=c["alpha"], low=c["alphaLow"],
+                             high=c["alphaHigh"],
+                             byTheory=c["alpha"] / a_th,
+                             **paired(pairs.get(c["name"]))))
+        eventlog.plot_alpha_en(
+            res, out / f"alphaReplay{r}.png",
+            f"shearFlowValidation {preset}: the {res['events']} first "
+            f"contacts of run {r}, replayed", EN, MODELS,
+            reference=(a_th, r"$\alpha_{th}$ (van de Ven & Mason)"))
+    (out / "replay.json").write_text(json.dumps(summary, indent=1) + "\n")
+
+    def g(v):
+        return "-" if v is None else f"{v:.4g}"
+    cols = [reg.Column("ensemble", "ensemble", 8),
+            reg.Column("kernel", "configuration", 7, gap="  "),
+            reg.Column("first", "events", 6, ">", str),
+            reg.Column("agg", "agg", 5, ">", str),
+            reg.Column("alpha", "alpha", 10, ">", g),
+            reg.Column("95 % low", "low", 10, ">", g),
+            reg.Column("95 % high", "high", 10, ">", g),
+            reg.Column("alpha/alpha_th", "byTheory", 15, ">", g),
+            reg.Column(f"vs {BASE}: only", "only", 15, ">", str),
+            reg.Column("ratio", "ratio", 7, ">", g),
+            reg.Column("95 %", "ratioCI", 15, ">", str)]
+    text = "\n".join(
+        [f"shearFlowValidation {preset}: replay of the first contacts of"
+         f" each run's collision-event log (doc/eventLog.md);"
+         f" alpha_th = {a_th:.4g}", ""] + reg.table(rows, cols)
+        + ["", "Kernel <model><100 e_n>: the run's kernel with that"
+           " agglomeration model and e_n. The replay freezes the"
+           " collisions (see the header of shearReplay.py)."])
+    (out / "replay.txt").write_text(text + "\n")
+    print(text)
+    return summary
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    replay(sys.argv[1])
+    sys.exit(0)
