@@ -18,25 +18,12 @@ import sys
 from pathlib import Path
 
 from aggloTools import eventlog, regression as reg
+from aggloTools.eventlog import BASE, EN_SCAN as EN
 
 import shearFlow
 
 HERE = Path(__file__).resolve().parent
-EN = (0.97, 0.80, 0.60)
 MODELS = ("EAM", "MAM")
-BASE = "EAM097"     # the paired comparisons are with EAM at e_n = 0.97
-
-
-def paired(p):
-    """The paired columns of a configuration (none for the base): the
-    events only the base / only this one agglomerates, and the ratio of
-    the alphas with its 95 % interval."""
-    if p is None:
-        return dict(only="(base)", ratio=None, ratioCI="")
-    ci = ("-" if p["ratioLow"] is None
-          else f"{p['ratioLow']:.3g}-{p['ratioHigh']:.3g}")
-    return dict(only=f"{p['onlyA']} / {p['onlyB']}", ratio=p["ratio"],
-                ratioCI=ci)
 
 
 def replay(preset, runs_dir=None, out_dir=None):
@@ -57,16 +44,10 @@ def replay(preset, runs_dir=None, out_dir=None):
     for r in logs:
         res = eventlog.replay(runs_dir / r, eventlog.en_variants(EN, MODELS),
                               events="first", base=BASE)
-        pairs = {p["b"]: p for p in res["paired"]}
         res = eventlog.portable(res, f"runs/{preset}/{r}")
         summary["ensembles"][r] = res
-        for c in res["configurations"][1:]:
-            rows.append(dict(ensemble=r, configuration=c["name"],
-                             events=c["events"], agg=c["agglomerations"],
-                             alpha=c["alpha"], low=c["alphaLow"],
-                             high=c["alphaHigh"],
-                             byTheory=c["alpha"] / a_th,
-                             **paired(pairs.get(c["name"]))))
+        rows += eventlog.scan_rows(
+            res, r, lambda c: dict(byTheory=c["alpha"] / a_th))
         eventlog.plot_alpha_en(
             res, out / f"alphaReplay{r}.png",
             f"shearFlowValidation {preset}: the {res['events']} first "
@@ -74,26 +55,12 @@ def replay(preset, runs_dir=None, out_dir=None):
             reference=(a_th, r"$\alpha_{th}$ (van de Ven & Mason)"))
     (out / "replay.json").write_text(json.dumps(summary, indent=1) + "\n")
 
-    def g(v):
-        return "-" if v is None else f"{v:.4g}"
-    cols = [reg.Column("ensemble", "ensemble", 8),
-            reg.Column("kernel", "configuration", 7, gap="  "),
-            reg.Column("first", "events", 6, ">", str),
-            reg.Column("agg", "agg", 5, ">", str),
-            reg.Column("alpha", "alpha", 10, ">", g),
-            reg.Column("95 % low", "low", 10, ">", g),
-            reg.Column("95 % high", "high", 10, ">", g),
-            reg.Column("alpha/alpha_th", "byTheory", 15, ">", g),
-            reg.Column(f"vs {BASE}: only", "only", 15, ">", str),
-            reg.Column("ratio", "ratio", 7, ">", g),
-            reg.Column("95 %", "ratioCI", 15, ">", str)]
-    text = "\n".join(
-        [f"shearFlowValidation {preset}: replay of the first contacts of"
-         f" each run's collision-event log (doc/eventLog.md);"
-         f" alpha_th = {a_th:.4g}", ""] + reg.table(rows, cols)
-        + ["", "Kernel <model><100 e_n>: the run's kernel with that"
-           " agglomeration model and e_n. The replay freezes the"
-           " collisions (see the header of shearReplay.py)."])
+    text = eventlog.scan_table(
+        f"shearFlowValidation {preset}: replay of the first contacts of"
+        f" each run's collision-event log (doc/eventLog.md);"
+        f" alpha_th = {a_th:.4g}", rows, "shearReplay.py",
+        extra_columns=[reg.Column("alpha/alpha_th", "byTheory", 15, ">",
+                                  lambda v: f"{v:.4g}")])
     (out / "replay.txt").write_text(text + "\n")
     print(text)
     return summary

@@ -145,3 +145,59 @@ def portable(res, case_name):
     out["configurations"] = [dict(c, source=Path(c["source"]).name)
                              for c in res["configurations"]]
     return out
+
+
+#: The restitution scan of the tutorials and its reference configuration
+EN_SCAN = (0.97, 0.80, 0.60)
+BASE = "EAM097"
+
+
+def _g(v):
+    return "-" if v is None else f"{v:.4g}"
+
+
+def _paired(p):
+    """The paired fields of a configuration (none for the base): the
+    events only the base / only this one agglomerates, and the ratio of
+    the alphas with its 95 % interval."""
+    if p is None:
+        return dict(only="(base)", ratio=None, ratioCI="")
+    ci = ("-" if p["ratioLow"] is None
+          else f"{p['ratioLow']:.3g}-{p['ratioHigh']:.3g}")
+    return dict(only=f"{p['onlyA']} / {p['onlyB']}", ratio=p["ratio"],
+                ratioCI=ci)
+
+
+def scan_rows(res, ensemble, extra=None):
+    """The table rows of a replay result (its variants, not the run's own
+    kernel): alpha with its interval and the pairing with the base;
+    extra(configuration) adds fields."""
+    pairs = {p["b"]: p for p in res["paired"]}
+    return [dict(ensemble=ensemble, configuration=c["name"],
+                 events=c["events"], agg=c["agglomerations"],
+                 alpha=c["alpha"], low=c["alphaLow"], high=c["alphaHigh"],
+                 **(extra(c) if extra else {}),
+                 **_paired(pairs.get(c["name"])))
+            for c in res["configurations"][1:]]
+
+
+def scan_table(title, rows, script, base=BASE, extra_columns=()):
+    """The text of a restitution-scan table (regression.Column objects
+    of extra fields go after the interval)."""
+    from . import regression as reg
+    cols = ([reg.Column("ensemble", "ensemble", 8),
+             reg.Column("kernel", "configuration", 7, gap="  "),
+             reg.Column("first", "events", 6, ">", str),
+             reg.Column("agg", "agg", 5, ">", str),
+             reg.Column("alpha", "alpha", 10, ">", _g),
+             reg.Column("95 % low", "low", 10, ">", _g),
+             reg.Column("95 % high", "high", 10, ">", _g)]
+            + list(extra_columns)
+            + [reg.Column(f"vs {base}: only", "only", 15, ">", str),
+               reg.Column("ratio", "ratio", 7, ">", _g),
+               reg.Column("95 %", "ratioCI", 15, ">", str)])
+    return "\n".join(
+        [title, ""] + reg.table(rows, cols)
+        + ["", "Kernel <model><100 e_n>: the run's kernel with that"
+           " agglomeration model and e_n. The replay freezes the"
+           f" collisions (see the header of {script})."])
