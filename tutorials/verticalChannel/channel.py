@@ -48,6 +48,14 @@ from aggloTools.foamfile import check_keys, read_dict
 
 HERE = Path(__file__).resolve().parent
 
+
+def report_dir(pname, reference=False):
+    """Where the post-processing of a preset writes: its runs' report
+    (runs/<preset>/report), or the committed reference (results/<preset>)
+    with reference."""
+    return (HERE / "results" / pname if reference
+            else HERE / "runs" / pname / "report")
+
 STAGES = ("unladen", "release", "dispersion", "agglomeration")
 MODELS = ("EAM", "MAM")
 N_PAPER = 6.0e6
@@ -399,7 +407,7 @@ def release(case, time=None):
             mine = np.nonzero(rank == r)[0]
             cloud.write_cloud(d, x[mine], dp, p["rhoParticle"], U=Up[mine],
                                cloud="particles", time=time, ids=mine,
-                               count=N)
+                               count=N, totals=(N, N, len(procs)))
     t2 = time_module.time()
     where = f" into {len(procs)} processor folders" if procs else ""
     print(f"released {N} particles of {dp * 1e6:g} um at t = {time}{where}"
@@ -412,8 +420,9 @@ def release(case, time=None):
 def branch_clouds(case, time, models):
     """Agglomeration branch: the released cloud `particles` of the time
     (in the case and in each processor folder) becomes one cloud per
-    model with the same particles, cloudProperties and source fields; the
-    statistics state is not copied (the counters start from zero)."""
+    model with the same particles, cloudProperties, record of the
+    particles (hardSphereCloudState) and source fields; the statistics
+    state is not copied (the counters start from zero)."""
     case = Path(case)
     for r in [case / time] + sorted(case.glob(f"processor*/{time}")):
         src = r / "lagrangian/particles"
@@ -423,8 +432,9 @@ def branch_clouds(case, time, models):
         for m in models:
             shutil.copytree(src, r / "lagrangian" / m)
             (r / "uniform/lagrangian" / m).mkdir(parents=True)
-            shutil.copy(r / "uniform/lagrangian/particles/cloudProperties",
-                        r / "uniform/lagrangian" / m)
+            for f in ("cloudProperties", cloud.RECORD):
+                shutil.copy(r / "uniform/lagrangian/particles" / f,
+                            r / "uniform/lagrangian" / m)
             for f in sources:
                 shutil.copy(f, r / f"{m}:{f.name.split(':', 1)[1]}")
         shutil.rmtree(src)

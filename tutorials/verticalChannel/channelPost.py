@@ -1,8 +1,11 @@
 """verticalChannel post-processing: frequencies by Eq. 87, the Table D.6
 regression, plots and the particle picture.
 
-    channelPost.py PRESET     results/PRESET: summary.json, regression.txt,
-                              plots (exit 1 on a FAIL)
+    channelPost.py PRESET [--reference]
+        the report runs/PRESET/report: summary.json, regression.txt,
+        plots, comparison.txt (against the committed reference
+        results/PRESET); --reference writes the reference itself
+        (exit 1 on a FAIL)
 
 Every run's statistics come from postProcessing/<model>HardSphere of its
 agglomeration stage (counters zeroed at the start of the stage)."""
@@ -465,9 +468,9 @@ def plots(out, p, res, runs):
 def picture(out, p, runs):
     """pyvista picture of the first finished EAM run's last time."""
     from aggloTools import render
-    for (c, m), (adir, cloud) in sorted(runs.items()):
+    for (c, m), (adir, cname) in sorted(runs.items()):
         t = times.time_dirs(adir)[-1]
-        cdir = t / "lagrangian" / cloud
+        cdir = t / "lagrangian" / cname
         if not (cdir / "positions").exists():
             continue
         x = cloud.read_positions(cdir / "positions")
@@ -489,10 +492,36 @@ def res_time(p, t):
 
 # ------------------------------------------------------------------ post
 
-def post(pname):
+def compare(rows, ref_file):
+    """The text comparing a report's regression rows with the committed
+    reference's (same check: value and status then and now)."""
+    if not ref_file.is_file():
+        return f"no committed reference {ref_file}"
+    ref = {r["check"]: r for r in json.loads(ref_file.read_text())
+           .get("regression", [])}
+    lines = [f"This report against the committed reference {ref_file}:",
+             f"{'check':<58} {'value':>11} {'reference':>11}  status"
+             "  (reference)"]
+    same = 0
+    for r in rows:
+        o = ref.get(r["check"])
+        val = lambda x: (f"{x:.4g}" if isinstance(x, (int, float))
+                         else str(x))
+        if o is None:
+            lines.append(f"{r['check'][:58]:<58} {val(r['value']):>11} "
+                         f"{'-':>11}  {r['status']}  (not in the reference)")
+            continue
+        same += o["status"] == r["status"]
+        lines.append(f"{r['check'][:58]:<58} {val(r['value']):>11} "
+                     f"{val(o['value']):>11}  {r['status']}  ({o['status']})")
+    lines.append(f"{same} of {len(rows)} rows with the reference's status")
+    return "\n".join(lines)
+
+
+def post(pname, reference=False):
     p = channel.preset(pname)
     runs = run_dirs(pname)
-    out = HERE / "results" / pname
+    out = channel.report_dir(pname, reference)
     out.mkdir(parents=True, exist_ok=True)
     if not runs:
         print(f"channelPost.py: no finished runs under runs/{pname}")
@@ -524,15 +553,20 @@ def post(pname):
     }
     (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
     plots(out, p, res, runs)
-    try:
-        picture(out, p, runs)
-    except Exception as e:      # pyvista without a display: report, go on
-        print(f"channelPost.py: no particle picture ({e})")
+    picture(out, p, runs)
     print((out / "regression.txt").read_text())
+    if not reference:
+        text = compare(rows, channel.report_dir(pname, True)
+                       / "summary.json")
+        (out / "comparison.txt").write_text(text + "\n")
+        print(text.splitlines()[-1])
     return 1 if nf else 0
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    args = sys.argv[1:]
+    ref = "--reference" in args
+    args = [a for a in args if a != "--reference"]
+    if len(args) != 1:
         sys.exit(__doc__)
-    sys.exit(post(sys.argv[1]))
+    sys.exit(post(args[0], ref))

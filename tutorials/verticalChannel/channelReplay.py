@@ -4,8 +4,9 @@ stages replayed through EAM and MAM at e_n = 0.97, 0.80 and 0.60
 (doc/eventLog.md): alpha per first contact of each cloud's own
 first-contact ensemble, with 95 % intervals.
 
-    channelReplay.py PRESET [RUNS]
-                              results/PRESET: replay.json, replay.txt,
+    channelReplay.py PRESET [RUNS] [--reference]
+                              runs/PRESET/report (results/PRESET with
+                              --reference): replay.json, replay.txt,
                               alphaReplay<config><cloud>.png of the runs
                               under runs/PRESET (or RUNS); nothing
                               without logs
@@ -22,14 +23,15 @@ from pathlib import Path
 from aggloTools import eventlog
 from aggloTools.eventlog import BASE, EN_SCAN as EN
 
+import channel
 import channelPost
 
 HERE = channelPost.HERE
 MODELS = ("EAM", "MAM")
 
 
-def replay(pname, runs_dir=None):
-    out = HERE / "results" / pname
+def replay(pname, runs_dir=None, reference=False):
+    out = channel.report_dir(pname, reference)
     runs = {k: v for k, v in channelPost.run_dirs(pname, runs_dir).items()
             if eventlog.folder(*v).is_dir()}
     if not runs:
@@ -62,7 +64,10 @@ def replay(pname, runs_dir=None):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (2, 3):
+    args = sys.argv[1:]
+    ref = "--reference" in args
+    args = [a for a in args if a != "--reference"]
+    if len(args) not in (1, 2):
         sys.exit(__doc__)
-    replay(*sys.argv[1:])
+    replay(*args, reference=ref)
     sys.exit(0)

@@ -59,7 +59,11 @@ Description
 Usage
     hardSphereReplay [-case DIR] [-cloud NAME] [-events all|first]
         [-json FILE] [-check] [-variants FILE] [-base NAME]
-        [kernelDict ...]
+        [-eventsOut FILE] [kernelDict ...]
+
+    -check ends with a fatal error (exit status 1) unless the run's kernel
+    reproduces every logged outcome. Outputs are written to a temporary
+    file and renamed, so a failed call leaves an earlier result intact.
 
     The logs are read from postProcessing/<cloud>CollisionEvents of the
     case (events<rank>.bin: serial and decomposed runs alike).
@@ -77,6 +81,7 @@ Usage
 #include "collisionEventFile.H"
 #include "collisionEventLog.H"
 #include <algorithm>
+#include <fstream>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -86,107 +91,8 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
-namespace
-{
-
-const scalar NaN = std::numeric_limits<scalar>::quiet_NaN();
-
-//- The counts of one configuration
-struct replayResult
-{
-    word name;
-    fileName source;
-    label events = 0;
-    label agglomerations = 0;
-    label notApproaching = 0;
-    List<label> branches = List<label>(collisionOutcome::nBranches, 0);
-    label compared = 0;
-    label matches = 0;
-    List<bool> agglomerated;
-};
-
-
-std::string num(const scalar v)
-{
-    if (!std::isfinite(v))
-    {
-        return "null";
-    }
-    std::ostringstream os;
-    os << std::setprecision(10) << v;
-    return os.str();
-}
-
-
-//- 95 % Wilson score interval of k successes in n trials
-void wilson(const label k, const label n, scalar& lo, scalar& hi)
-{
-    if (n == 0)
-    {
-        lo = hi = NaN;
-        return;
-    }
-    const scalar z = 1.959963984540054;
-    const scalar p = scalar(k)/n;
-    const scalar den = 1 + z*z/n;
-    const scalar mid = (p + z*z/(2*n))/den;
-    const scalar half = z*std::sqrt(p*(1 - p)/n + z*z/(4*n*n))/den;
-    lo = max(0, mid - half);
-    hi = min(1, mid + half);
-}
-
-
-//- Replay the events through a kernel
-replayResult replay
-(
-    const word& name,
-    const fileName& source,
-    const dictionary& kernelDict,
-    const UList<collisionEvent>& events,
-    const bool compare
-)
-{
-    const hardSphereCollisionKernel kernel(kernelDict);
-    replayResult r;
-    r.name = name;
-    r.source = source;
-    r.agglomerated.setSize(events.size(), false);
-    collisionOutcome outcome;
-    forAll(events, k)
-    {
-        const collisionEvent& e = events[k];
-        ++r.events;
-        if (!binaryCollision(e.p1, e.p2).approaching())
-        {
-            // A ghost contact can be separating: nothing to resolve
-            ++r.notApproaching;
-            continue;
-        }
-        kernel.collide(e.p1, e.p2, outcome);
-        ++r.branches[outcome.branch];
-        if (outcome.agglomerates)
-        {
-            ++r.agglomerations;
-            r.agglomerated[k] = true;
-        }
-        if (compare && e.branch != collisionEvent::ghostBranch)
-        {
-            ++r.compared;
-            if
-            (
-                e.branch == outcome.branch
-             && e.agglomerates == outcome.agglomerates
-             && e.type == outcome.type
-            )
-            {
-                ++r.matches;
-            }
-        }
-    }
-    return r;
-}
-
-} // End anonymous namespace
+#include "replayConfiguration.H"
+#include "writeEvents.H"
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -220,11 +126,39 @@ int main(int argc, char *argv[])
         "base", "name", "the configuration the others are paired with"
         " (the first)"
     );
+    argList::addOption
+    (
+        "eventsOut", "file", "CSV: every replayed event, its pair state"
+        " (u_n, tangential speeds, spins) and each configuration's branch,"
+        " agglomeration and intermediates"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
 
+    // Every output goes to a temporary file renamed at the end, so that a
+    // failure leaves an earlier result as it was
+    const bool keepEvents = args.found("eventsOut");
+
     const word cloudName(args.getOrDefault<word>("cloud", "kinematicCloud"));
+    const fileName jsonOut
+    (
+        args.getOrDefault<fileName>
+        (
+            "json", collisionEventLog::folder(runTime, cloudName)
+            /"replay.json"
+        )
+    );
+    for (const word opt : {"json", "eventsOut"})
+    {
+        const fileName f(args.getOrDefault<fileName>(opt, ""));
+        if (args.found(opt) && !isDir(f.path()))
+        {
+            FatalErrorInFunction
+                << "Cannot write " << f << ": the folder " << f.path()
+                << " does not exist" << exit(FatalError);
+        }
+    }
     const word which(args.getOrDefault<word>("events", "all"));
     if (which != "all" && which != "first")
     {
@@ -299,7 +233,11 @@ int main(int argc, char *argv[])
         }
         results.append
         (
-            replay("run", props.objectPath(), runKernel, events, true)
+            replay
+            (
+                "run", props.objectPath(), runKernel, events, true,
+                keepEvents
+            )
         );
         if (args.found("variants"))
         {
@@ -311,7 +249,17 @@ int main(int argc, char *argv[])
                     << "Cannot read the variants dictionary " << f
                     << exit(FatalError);
             }
-            const dictionary variants(is);
+            // A name given twice is an error, not a silent merge
+            const entry::inputMode mode = entry::globalInputMode;
+            entry::globalInputMode = entry::inputMode::ERROR;
+            dictionary variants;
+            variants.name() = is.name();
+            variants.read(is);
+            entry::globalInputMode = mode;
+            const word runModel
+            (
+                runKernel.getOrDefault<word>("agglomerationModel", "none")
+            );
             for (const entry& v : variants)
             {
                 if (!v.isDict())
@@ -323,11 +271,22 @@ int main(int argc, char *argv[])
                 }
                 dictionary kd(runKernel);
                 kd.merge(v.dict());
+
+                // Another model: the run model's coefficients do not apply
+                // (unknown entries of the other model)
+                const word model(kd.get<word>("agglomerationModel"));
+                if (model != runModel && !v.dict().found(runModel + "Coeffs"))
+                {
+                    kd.remove(runModel + "Coeffs");
+                }
                 hardSphereInput::checkKeys
                 (
                     kd, hardSphereCollisionKernel::keys(kd)
                 );
-                results.append(replay(v.keyword(), f, kd, events, false));
+                results.append
+                (
+                    replay(v.keyword(), f, kd, events, false, keepEvents)
+                );
             }
         }
     }
@@ -343,7 +302,37 @@ int main(int argc, char *argv[])
         }
         const dictionary dict(is);
         hardSphereInput::checkKeys(dict, hardSphereCollisionKernel::keys(dict));
-        results.append(replay(f.nameLessExt(), f, dict, events, false));
+        results.append
+        (
+            replay(f.nameLessExt(), f, dict, events, false, keepEvents)
+        );
+    }
+
+    // Names: one per configuration; the base one of them
+    wordList names(results.size());
+    forAll(results, c)
+    {
+        names[c] = results[c].name;
+        for (label b = 0; b < c; ++b)
+        {
+            if (names[b] == names[c])
+            {
+                FatalErrorInFunction
+                    << "Two configurations are named " << names[c]
+                    << ": each needs its own name" << exit(FatalError);
+            }
+        }
+    }
+    label base = 0;
+    if (args.found("base"))
+    {
+        base = names.find(args.get<word>("base"));
+        if (base < 0)
+        {
+            FatalErrorInFunction
+                << "-base " << args.get<word>("base") << " is not a"
+                << " configuration; valid: " << names << exit(FatalError);
+        }
     }
 
     // Table
@@ -354,7 +343,7 @@ int main(int argc, char *argv[])
         std::ostringstream os;
         os  << std::setw(20) << "configuration" << std::setw(9) << "events"
             << std::setw(8) << "agg" << std::setw(14) << "alpha"
-            << "  95 % interval";
+            << "  95 % interval   not approaching";
         Info<< os.str().c_str() << nl;
     }
     for (const replayResult& r : results)
@@ -365,16 +354,14 @@ int main(int argc, char *argv[])
         os  << std::setw(20) << r.name << std::setw(9) << r.events
             << std::setw(8) << r.agglomerations << std::setw(14)
             << num(r.events ? scalar(r.agglomerations)/r.events : NaN)
-            << "  " << num(lo) << " - " << num(hi);
+            << "  " << num(lo) << " - " << num(hi) << "   "
+            << r.notApproaching;
         Info<< os.str().c_str() << nl;
     }
 
     // JSON
-    const fileName jsonFile
-    (
-        args.getOrDefault<fileName>("json", dir/"replay.json")
-    );
-    OFstream js(jsonFile);
+    const fileName jsonTmp(jsonOut + ".tmp");
+    OFstream js(jsonTmp);
     js  << "{\n  \"case\": \"" << runTime.globalPath().c_str() << "\",\n"
         << "  \"cloud\": \"" << cloudName.c_str() << "\",\n"
         << "  \"logFiles\": " << nFiles << ",\n"
@@ -409,27 +396,6 @@ int main(int argc, char *argv[])
                 << r.matches;
         }
         js  << "}" << (c + 1 < results.size() ? "," : "") << "\n";
-    }
-    label base = 0;
-    if (args.found("base"))
-    {
-        const word name(args.get<word>("base"));
-        base = -1;
-        wordList names(results.size());
-        forAll(results, c)
-        {
-            names[c] = results[c].name;
-            if (results[c].name == name)
-            {
-                base = c;
-            }
-        }
-        if (base < 0)
-        {
-            FatalErrorInFunction
-                << "-base " << name << " is not a configuration; valid: "
-                << names << exit(FatalError);
-        }
     }
     js  << "  ],\n  \"base\": \"" << results[base].name.c_str()
         << "\",\n  \"paired\": [\n";
@@ -475,6 +441,23 @@ int main(int argc, char *argv[])
             << "}" << (++nPaired + 1 < results.size() ? "," : "") << "\n";
     }
     js  << "  ]\n}\n";
+    js.flush();
+    if (!js.good())
+    {
+        FatalErrorInFunction
+            << "Writing " << jsonTmp << " failed" << exit(FatalError);
+    }
+    if (!Foam::mv(jsonTmp, jsonOut))
+    {
+        FatalErrorInFunction
+            << "Cannot move " << jsonTmp << " to " << jsonOut
+            << exit(FatalError);
+    }
+
+    if (keepEvents)
+    {
+        writeEvents(args.get<fileName>("eventsOut"), events, results);
+    }
 
     bool ok = true;
     for (const replayResult& r : results)
@@ -487,12 +470,17 @@ int main(int argc, char *argv[])
             ok = ok && r.matches == r.compared;
         }
     }
-    Info<< nl << "JSON: " << jsonFile << nl << "End" << nl << endl;
+    Info<< nl << "JSON: " << jsonOut << nl;
 
+    // The exit status through FatalError: a plain return would be
+    // overridden by the argList's exit status 0
     if (args.found("check") && !ok)
     {
-        return 1;
+        FatalErrorInFunction
+            << "-check: the run's kernel does not reproduce every logged"
+            << " outcome (see the counts above)" << exit(FatalError);
     }
+    Info<< "End" << nl << endl;
     return 0;
 }
 

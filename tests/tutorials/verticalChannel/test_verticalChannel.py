@@ -113,7 +113,7 @@ def test_statistics_complete_and_consistent(smoke_runs, np_):
                                       / "lagrangian" / m / "d")
         assert t[:, 5].mean() == pytest.approx(
             (math.pi / 6 * dfin**3).sum() / (Lx * Ly * Lz), rel=0.01)
-    summary = json.loads((case / "results/smoke/summary.json").read_text())
+    summary = json.loads((case / "runs/smoke/report/summary.json").read_text())
     assert not [r for r in summary["regression"] if r["status"] == "FAIL"]
 
 
@@ -125,7 +125,7 @@ def test_replay_of_the_event_logs(smoke_runs, np_):
     contacts did, every logged outcome reproduced; EAM at e_n 0.97 is the
     run's kernel for the EAM clouds."""
     case = smoke_runs[np_]
-    rep = json.loads((case / "results/smoke/replay.json").read_text())
+    rep = json.loads((case / "runs/smoke/report/replay.json").read_text())
     assert sorted(rep["ensembles"]) == ["C1 EAM", "C1 MAM", "C2 EAM",
                                         "C2 MAM"]
     for (c, m), adir in agg_runs(case).items():

@@ -126,6 +126,12 @@ CASES = {
     "sandgrainShadow": (WALL, SAND.replace("}", "shadowMode none; }"),
                         "none"),
     "wallPatchMissing": ('walls { ".*"', 'walls { "nothing"', "xMin"),
+    # an entry that names no wall patch, or one shadowed by another entry,
+    # was silently ignored
+    "wallEntryMisspelt": ('walls { ".*"', 'walls { yMinn { ' + SAND
+                          + ' } ".*"', "yMinn"),
+    "wallEntryShadowed": ('walls { ".*"', 'walls { "(xMin|yMin)" { '
+                          'wallModel foo; } ".*"', "foo"),
     # cloud submodels
     "collisionModelName": (COLL, "collisionModel hardSpher;", "hardSpher"),
     "collisionModelMissing": (COLL, "", "collisionModel"),

@@ -6,6 +6,7 @@ an earlier write neither repeats nor loses an event; a kernel variant
 equal to the run's kernel pairs with it on every event; with eventLog off
 nothing is written."""
 
+import re
 import shutil
 
 import numpy as np
@@ -157,3 +158,144 @@ def test_no_log_when_off(case_dir, foam_env):
     run_case(c)
     assert stats_rows(c)[-1]["nCol"] > 0
     assert not eventlog.folder(c).exists()
+
+
+# ------------------------------------ the replay as a gate, its bad input
+
+def _replay_cmd(c, *args):
+    return run([foam_bin("hardSphereReplay"), "-case", str(c), *args], c,
+               "log.hardSphereReplay.gate", check=False)
+
+
+def test_check_fails_when_outcomes_differ(case_dir, foam_env):
+    """-check exits with status 1 when the run's kernel does not reproduce
+    the log (the run's e_n changed after the run), 0 when it does; the
+    Python wrapper raises."""
+    c = gas(case_dir / "gas")
+    run_case(c)
+    assert _replay_cmd(c, "-check").returncode == 0
+    f = c / "constant" / "kinematicCloudProperties"
+    f.write_text(f.read_text().replace("en 0.97;", "en 0.5;", 1))
+    res = _replay_cmd(c, "-check")
+    assert res.returncode == 1, res.stdout[-1500:]
+    assert "does not reproduce" in res.stdout
+    with pytest.raises(Exception, match="rc 1"):
+        eventlog.replay(c, check=True)
+
+
+def test_bad_arguments_leave_earlier_results(case_dir, foam_env):
+    """-base naming no configuration, a -json folder that does not exist
+    and a variant named twice are fatal before anything is written; an
+    earlier replay.json stays as it was."""
+    c = gas(case_dir / "gas")
+    run_case(c)
+    out = c / "r.json"
+    assert _replay_cmd(c, "-json", str(out)).returncode == 0
+    before = out.read_text()
+    res = _replay_cmd(c, "-json", str(out), "-base", "nosuch")
+    assert res.returncode == 1 and "nosuch" in res.stdout
+    assert out.read_text() == before
+    res = _replay_cmd(c, "-json", "/nonexistent/dir/r.json")
+    assert res.returncode == 1 and "does not exist" in res.stdout
+    v = c / "twice"
+    v.write_text("a { agglomerationModel MAM; }\n"
+                 "a { agglomerationModel none; }\n")
+    res = _replay_cmd(c, "-json", str(out), "-variants", str(v))
+    assert res.returncode == 1 and "a" in res.stdout
+    assert out.read_text() == before
+
+
+@pytest.mark.parametrize("field, offset, value, fmt, words", [
+    ("d1", 32 + 8 * 9, float("nan"), "<d", "d nan"),
+    ("category", 4, 7, "B", "category 7"),
+    ("branch", 5, 9, "B", "branch 9"),
+    ("nPrimary1", 208, -5, "<i", "nPrimary -5"),
+    ("timeIndex", 0, -3, "<i", "time index -3"),
+], ids=["nanDiameter", "category", "branch", "nPrimary", "timeIndex"])
+def test_corrupt_record_is_fatal(case_dir, foam_env, field, offset, value,
+                                 fmt, words):
+    """A record that cannot be a logged collision stops the replay with a
+    message naming the file, the record and the value (no SIGFPE)."""
+    import struct
+    c = gas(case_dir / "gas")
+    run_case(c)
+    f = eventlog.folder(c) / "events0.bin"
+    data = bytearray(f.read_bytes())
+    k = 3
+    pos = eventlog.HEADER_BYTES + k * eventlog.DTYPE.itemsize + offset
+    assert eventlog.DTYPE.fields[field][1] == offset
+    struct.pack_into(fmt, data, pos, value)
+    f.write_bytes(bytes(data))
+    res = _replay_cmd(c)
+    assert res.returncode == 1, res.stdout[-1500:]
+    assert f"record {k}" in res.stdout and words in res.stdout
+
+
+def test_variant_of_the_other_model_drops_the_run_coefficients(
+        case_dir, foam_env):
+    """A run with EAMCoeffs in its kernel replays a MAM variant (the
+    EAM's coefficients are not the MAM's: they are left out)."""
+    c = gas(case_dir / "gas")
+    f = c / "constant" / "kinematicCloudProperties"
+    f.write_text(f.read_text().replace(
+        "agglomerationModel EAM;",
+        "agglomerationModel EAM; EAMCoeffs { impactVelocity full; }", 1))
+    run_case(c)
+    res = eventlog.replay(c, {"MAM": {"agglomerationModel": "MAM"}},
+                          check=True)
+    conf = {r["name"]: r for r in res["configurations"]}
+    assert conf["MAM"]["events"] == conf["run"]["events"] > 20
+
+
+def test_log_cut_back_by_an_earlier_run_is_refused(case_dir, foam_env):
+    """Run to step 40; re-run a copy from step 20 to 30; then continue
+    from the latest time (step 40, a folder of the older run): the log
+    was cut back to step 20 and holds only the re-run's events since, so
+    the start at step 40 is refused instead of counting on a log that
+    lost events. Starting from the re-run's own end (step 30) works."""
+    full = gas(case_dir / "full")
+    run_case(full)
+    ctl = ["foamDictionary", "system/controlDict", "-entry"]
+    for k, v in (("startFrom", "startTime"), ("startTime", "0.002"),
+                 ("endTime", "0.003")):
+        run([foam_bin(ctl[0]), *ctl[1:], k, "-set", v], full, "log.fd")
+    run([foam_bin("aggloPimpleFoam")], full, "log.rerun")
+    for k, v in (("startFrom", "latestTime"), ("endTime", "0.005")):
+        run([foam_bin(ctl[0]), *ctl[1:], k, "-set", v], full, "log.fd")
+    res = run([foam_bin("aggloPimpleFoam")], full, "log.latest",
+              check=False)
+    assert res.returncode == 1, res.stdout[-1500:]
+    assert "has cut the log back" in res.stdout
+    shutil.rmtree(full / "0.004")
+    run([foam_bin("aggloPimpleFoam")], full, "log.latest2")
+    rec = (full / "0.005" / "uniform" / "lagrangian" / "kinematicCloud"
+           / "collisionEventLog").read_text()
+    n = len(eventlog.read_events(full))
+    assert n > 20 and re.search(rf"nEvents\s+{n};", rec)
+
+
+def test_per_event_output(case_dir, foam_env):
+    """-eventsOut: one line per event; the run's own kernel gives every
+    logged outcome; the pair state is the log's (u_n from the logged
+    states, by hand); a model that never agglomerates agrees with the
+    run on every rebound and the per-event agglomerations add up to the
+    JSON's counts."""
+    c = gas(case_dir / "gas")
+    run_case(c)
+    res, ev = eventlog.replay_events(c, {
+        "elastic": {"agglomerationModel": "none",
+                    "particleCollision": {"en": 1}}})
+    log = eventlog.read_events(c)
+    assert len(ev["event"]) == len(log) > 20
+    assert np.array_equal(ev["run.branch"], log["branch"])
+    assert np.array_equal(ev["run.agglomerates"], log["agglomerates"])
+    n = log["x2"] - log["x1"]
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    un = np.einsum("ij,ij->i", log["U2"] - log["U1"], n)
+    np.testing.assert_allclose(ev["un"], un, rtol=1e-8, atol=1e-15)
+    conf = {r["name"]: r for r in res["configurations"]}
+    assert ev["elastic.agglomerates"].sum() == 0
+    assert ev["run.agglomerates"].sum() == conf["run"]["agglomerations"]
+    # EAM intermediates where the EAM decided (Eq. 21 terms finite)
+    eam = ev["run.branch"] != 1
+    assert np.all(np.isfinite(ev["run.dEvdW"][eam]))

@@ -14,13 +14,48 @@ from .foamfile import (binary_arch, field_class, is_binary, list_body,
 from .mesh import Mesh
 
 
+#: The record a hard-sphere cloud keeps beside its particles
+#: (clouds/hardSphereCloudState): a restart checks the files against it
+RECORD = "hardSphereCloudState"
+
+
+def write_record(case, time, cloud, n, n_total=None, n_primaries=None,
+                 n_procs=1):
+    """The record of the particles written at time: n on this rank (case:
+    the case or one processor folder), n_total and n_primaries over all
+    n_procs ranks (default: this rank's, primaries only)."""
+    n_total = n if n_total is None else n_total
+    n_primaries = n_total if n_primaries is None else n_primaries
+    write_foamfile(Path(case) / str(time) / "uniform" / "lagrangian" / cloud
+                   / RECORD, "dictionary",
+                   f"{time}/uniform/lagrangian/{cloud}", RECORD,
+                   f"writer          aggloTools;\nnProcs          {n_procs};"
+                   f"\nnParticles      {n};\n"
+                   f"nParticlesTotal {n_total};\n"
+                   f"nPrimariesTotal {n_primaries};")
+
+
+def read_record(case, time, cloud):
+    """The record of a written cloud as a dict of ints (None if absent)."""
+    from .foamfile import read_dict
+    f = Path(case) / str(time) / "uniform" / "lagrangian" / cloud / RECORD
+    if not f.is_file():
+        return None
+    return {k: (int(v) if k != "writer" else v)
+            for k, v in read_dict(f).items()}
+
+
 def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
-                cloud="kinematicCloud", time="0", ids=None, count=None):
+                cloud="kinematicCloud", time="0", ids=None, count=None,
+                totals=None):
     """Write a complete initial cloud (one particle per parcel) for the
     basicAgglomerateParcel: the legacy positions file (cell -1: located on
     reading) plus every field, with origProcId 0 and origId 0..N-1 or ids
     (decomposition-independent ids); count (default: the largest id + 1)
-    is the particleCount from which new particles are numbered."""
+    is the particleCount from which new particles are numbered. The
+    cloud's record (write_record) goes with it: totals = (particles,
+    primaries, ranks) over all ranks when case is one processor folder
+    of several."""
     loc = f"{time}/lagrangian/{cloud}"
     out = Path(case) / loc
     x = np.asarray(positions, float)
@@ -57,6 +92,12 @@ def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
     field("UTurb", "vectorField", zeros)
     field("omega", "vectorField", omega)
     field("nPrimary", "labelField", n_primary, "%d")
+    # no previous partner (the values the cloud gives a missing field)
+    field("lastPartnerProc", "labelField", -np.ones(N, int), "%d")
+    field("lastPartnerId", "labelField", -np.ones(N, int), "%d")
+    field("lastContactTime", "scalarField", np.full(N, -1e15))
+    t_n, t_prim, t_procs = totals or (N, int(n_primary.sum()), 1)
+    write_record(case, time, cloud, N, t_n, t_prim, t_procs)
     write_foamfile(Path(case) / time / "uniform" / "lagrangian" / cloud
                    / "cloudProperties", "dictionary",
                    f"{time}/uniform/lagrangian/{cloud}", "cloudProperties",
@@ -83,7 +124,14 @@ def read_positions(path):
                       and (a["nl"] == ord("\n")).all()):
             raise ValueError(f"{path}: unexpected binary record layout")
         return a["x"].astype(float).reshape(n, 3)
-    rows = re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", data[hend:].decode())
+    body = re.sub(r"//[^\n]*", "", data[hend:].decode())
+    m = re.match(r"\s*(\d+)\s*\(", body)
+    rows = re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", body)
+    if m is None or int(m.group(1)) != len(rows) \
+            or not body.rstrip().endswith(")"):
+        raise ValueError(f"{path}: {len(rows)} positions for the "
+                         f"{m.group(1) if m else 'missing'} the list "
+                         "announces (a file cut off?)")
     return np.array([r.split() for r in rows], float).reshape(-1, 3)
 
 
@@ -126,6 +174,12 @@ def append_particles(case, time, cloud, x, new):
           / "cloudProperties")
     cp.write_text(re.sub(r"geometry\s+\w+;", "geometry positions;",
                          cp.read_text()))
+    rec = read_record(case, time, cloud)
+    if rec is not None:
+        prim = int(np.sum(new.get("nPrimary", np.ones(n))))
+        write_record(case, time, cloud, rec["nParticles"] + n,
+                     rec["nParticlesTotal"] + n,
+                     rec["nPrimariesTotal"] + prim, rec["nProcs"])
     return n0
 
 
@@ -145,6 +199,9 @@ def read_cloud(case, time, cloud="kinematicCloud", names=None):
     out = {n: read_lagrangian(d / n) for n in names if (d / n).exists()}
     if (d / "positions").exists():
         out["positions"] = read_positions(d / "positions")
+    sizes = {n: len(v) for n, v in out.items()}
+    if len(set(sizes.values())) > 1:
+        raise ValueError(f"{d}: fields of different lengths {sizes}")
     return out
 
 

@@ -79,16 +79,20 @@ def variants_text(variants):
 
 
 def replay(case, variants=None, cloud="kinematicCloud", events="all",
-           check=False, out=None, base=None):
+           check=False, out=None, base=None, events_out=None):
     """Run hardSphereReplay on the case: the run's own kernel and the
     variants (name -> entries merged into it), the others paired with
     base (default: the run's kernel); returns its JSON as a dict. out:
     where the JSON goes (default: replay-<events>.json in the log
-    folder)."""
+    folder); events_out: where the per-event CSV goes (-eventsOut).
+    check: the run's kernel must reproduce every logged outcome (a
+    failed check raises runner.CommandError)."""
     case = Path(case).resolve()
     out = Path(out or folder(case, cloud) / f"replay-{events}.json")
     cmd = [foam_bin("hardSphereReplay"), "-case", str(case), "-cloud",
            cloud, "-events", events, "-json", str(out)]
+    if events_out:
+        cmd += ["-eventsOut", str(events_out)]
     if variants:
         vfile = out.with_suffix(".variants")
         vfile.write_text(variants_text(variants))
@@ -99,6 +103,27 @@ def replay(case, variants=None, cloud="kinematicCloud", events="all",
         cmd += ["-base", base]
     run(cmd, case, f"log.hardSphereReplay.{events}")
     return json.loads(out.read_text())
+
+
+def read_replay_events(path):
+    """The per-event CSV of hardSphereReplay -eventsOut as a dict of
+    column name -> numpy array (configuration columns <name>.<field>)."""
+    path = Path(path)
+    with open(path) as f:
+        names = f.readline().strip().split(",")
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    if data.shape[1] != len(names):
+        raise ValueError(f"{path}: {data.shape[1]} columns for "
+                         f"{len(names)} names")
+    return {n: data[:, k] for k, n in enumerate(names)}
+
+
+def replay_events(case, variants, cloud="kinematicCloud", events="all"):
+    """Replay with the per-event output: (the JSON result, the columns of
+    read_replay_events)."""
+    f = folder(case, cloud) / f"replay-{events}-events.csv"
+    res = replay(case, variants, cloud, events, events_out=f)
+    return res, read_replay_events(f)
 
 
 def en_variants(ens, models=("EAM", "MAM")):

@@ -38,39 +38,50 @@ def _value(tok):
 
 def parse_dict(text):
     """Parse a dictionary of `key value;` entries and `name { ... }`
-    sub-dictionaries (no lists, macros or directives) into a dict."""
+    sub-dictionaries (no lists, macros or directives) into a dict; a
+    missing ';', '{' or '}' is a ValueError."""
     tokens = re.findall(r'"[^"]*"|[{};]|[^\s{};]+', strip_comments(text))
     pos = 0
 
-    def block():
+    def block(inner):
         nonlocal pos
         out = {}
         while pos < len(tokens):
             tok = tokens[pos]
+            pos += 1
             if tok == "}":
-                pos += 1
+                if not inner:
+                    raise ValueError("unbalanced braces: a '}' without "
+                                     "its '{'")
                 return out
             key = tok.strip('"')
-            pos += 1
-            if tokens[pos] == "{":
+            if pos < len(tokens) and tokens[pos] == "{":
                 pos += 1
-                out[key] = block()
+                out[key] = block(True)
                 continue
             vals = []
-            while tokens[pos] != ";":
+            while pos < len(tokens) and tokens[pos] not in (";", "{", "}"):
                 vals.append(_value(tokens[pos]))
                 pos += 1
+            if pos == len(tokens) or tokens[pos] != ";":
+                raise ValueError(f"entry '{key}' does not end with ';'")
             pos += 1
             out[key] = vals[0] if len(vals) == 1 else vals
+        if inner:
+            raise ValueError("a sub-dictionary without its closing '}'")
         return out
 
-    d = block()
+    d = block(False)
     d.pop("FoamFile", None)
     return d
 
 
 def read_dict(path):
-    return parse_dict(Path(path).read_text())
+    """parse_dict of a file; an error names the file."""
+    try:
+        return parse_dict(Path(path).read_text())
+    except ValueError as e:
+        raise ValueError(f"{path}: {e}") from None
 
 
 def check_keys(d, valid, where):
@@ -182,17 +193,39 @@ def ascii_list(text, pos=0):
     start = m.end()
     first = _skip_comments(text, start)
     if text.startswith("(", first):         # a list of (x y z)
-        end = re.compile(r"\)\s*\)").search(text, first).end() - 1
-        flat = np.array(text[start:end].replace("(", " ")
+        close = re.compile(r"\)\s*\)").search(text, first)
+        if close is None:
+            raise ValueError("a list of vectors without its closing ')'"
+                             " (a file cut off?)")
+        flat = np.array(text[start:close.end() - 1].replace("(", " ")
                         .replace(")", " ").split(), float)
-        return flat.reshape(n if n is not None else -1, 3)
-    return np.array(text[start:text.index(")", start)].split(), float)
+        if flat.size % 3:
+            raise ValueError(f"{flat.size} numbers in a list of vectors")
+        out = flat.reshape(-1, 3)
+    else:
+        end = text.find(")", start)
+        if end < 0:
+            raise ValueError("a list without its closing ')' (a file cut"
+                             " off?)")
+        out = np.array(text[start:end].split(), float)
+    if n is not None and len(out) != n:
+        raise ValueError(f"the list announces {n} values but holds "
+                         f"{len(out)}")
+    return out
 
 
 def read_list_file(path):
     """A lagrangian IOField or a plain list file (labelList, vectorField:
     cellProcAddressing, points), ASCII or binary, as a numpy array ((n,)
-    or (n, 3))."""
+    or (n, 3)); a file that is not a whole list is a ValueError naming
+    it."""
+    try:
+        return _read_list_file(path)
+    except ValueError as e:
+        raise ValueError(f"{path}: {e}") from None
+
+
+def _read_list_file(path):
     data = Path(path).read_bytes()
     hend = data.index(b"}") + 1
     head = data[:hend]

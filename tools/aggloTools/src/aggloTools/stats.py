@@ -12,20 +12,37 @@ def read_stats(case, cloud="kinematicCloud"):
     are joined in time order (later folders win at equal times)."""
     base = Path(case) / "postProcessing" / f"{cloud}HardSphere"
     cols, rows = None, []
-    for sub in sorted(base.iterdir(), key=lambda p: float(p.name)):
-        f = sub / "stats.dat"
-        if not f.exists():
-            continue
-        t0 = float(sub.name)
+    files = [sub / "stats.dat" for sub in sorted(
+        base.iterdir(), key=lambda p: float(p.name))
+        if (sub / "stats.dat").exists()]
+    for k, f in enumerate(files):
+        t0 = float(f.parent.name)
         rows = [r for r in rows if r[0] <= t0 + 1e-12 * max(1, abs(t0))]
-        for line in f.read_text().splitlines():
+        lines = f.read_text().splitlines()
+        for n, line in enumerate(lines):
             if line.startswith("# Time"):
                 cols = line[2:].split()
             elif line and not line.startswith("#"):
-                rows.append([float(c) for c in line.split()])
+                if cols is None:
+                    raise ValueError(f"{f}, line {n + 1}: a row before the"
+                                     " '# Time ...' header")
+                try:
+                    row = [float(c) for c in line.split()]
+                except ValueError:
+                    row = []
+                if len(row) != len(cols):
+                    # a row cut off by a kill: harmless only where a
+                    # restart's file follows (its rows replace it)
+                    if n == len(lines) - 1 and k < len(files) - 1:
+                        continue
+                    raise ValueError(
+                        f"{f}, line {n + 1}: {len(row) or 'unreadable'} "
+                        f"values for {len(cols)} columns (a write cut "
+                        "off? restart the run from its last written time)")
+                rows.append(row)
     if cols is None:
         raise FileNotFoundError(f"no stats.dat under {base}")
-    arr = np.array(rows)
+    arr = np.array(rows).reshape(-1, len(cols))
     return {c: arr[:, i] for i, c in enumerate(cols)}
 
 

@@ -32,11 +32,50 @@ def _files(folder):
     return {p.relative_to(folder) for p in folder.rglob("*") if p.is_file()}
 
 
+#: The record a hard-sphere cloud writes after its particles
+#: (clouds/hardSphereCloudState) and the parcel fields it requires
+CLOUD_RECORD = "hardSphereCloudState"
+OWN_FIELDS = {"omega", "nPrimary", "lastPartnerProc", "lastPartnerId",
+              "lastContactTime"}
+
+
+def _record_count(path):
+    """nParticles of a cloud record (this rank's particles)."""
+    for line in path.read_text().splitlines():
+        words = line.replace(";", " ").split()
+        if words[:1] == ["nParticles"]:
+            return int(words[1])
+    return None
+
+
+def _clouds_incomplete(folder):
+    """True if a cloud's files of a written time disagree with its record:
+    the record missing beside the parcel's own fields, or present with a
+    particle field missing."""
+    lag, uni = folder / "lagrangian", folder / "uniform" / "lagrangian"
+    names = {p.name for d in (lag, uni) if d.is_dir() for p in d.iterdir()
+             if p.is_dir()}
+    for name in names:
+        rec = uni / name / CLOUD_RECORD
+        have = ({f.name for f in (lag / name).iterdir()}
+                if (lag / name).is_dir() else set())
+        if not rec.is_file():
+            if have & OWN_FIELDS:
+                return True
+            continue
+        n = _record_count(rec)
+        if n and not ({"coordinates", "positions"} & have
+                      and OWN_FIELDS <= have):
+            return True
+    return False
+
+
 def incomplete_time(case):
     """The latest time folder of a case (or of one processor folder) if
     its write was cut off, else None: a file without its end divider, no
-    uniform/time, or a file of the previous write missing. The first
-    folder (the start) is never judged."""
+    uniform/time, a cloud's files that disagree with its record, or a
+    file of the previous write missing. The first folder (the start) is
+    never judged."""
     times = time_dirs(case)
     if len(times) < 2:
         return None
@@ -44,6 +83,8 @@ def incomplete_time(case):
     if not (last / "uniform" / "time").is_file():
         return last
     if any(not _complete_file(f) for f in last.rglob("*") if f.is_file()):
+        return last
+    if _clouds_incomplete(last):
         return last
     if len(times) > 2 and not _files(previous) <= _files(last):
         return last

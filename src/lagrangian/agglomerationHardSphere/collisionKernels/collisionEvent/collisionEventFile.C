@@ -49,6 +49,80 @@ long long fileBytes(const Foam::fileName& file)
 }
 
 
+bool finiteVector(const Foam::vector& v)
+{
+    return
+        std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+
+//- The reason why a record read from a log cannot be a logged collision
+//  (empty if it can be one)
+std::string invalidRecord(const Foam::collisionEvent& e)
+{
+    std::ostringstream os;
+    if (e.timeIndex < 0)
+    {
+        os << "time index " << e.timeIndex << " (valid: >= 0)";
+    }
+    else if (e.category < 0 || e.category > 2)
+    {
+        os << "category " << e.category << " (valid: 0 first, 1 repeat,"
+           << " 2 overlap at the start of the step)";
+    }
+    else if
+    (
+        e.branch != Foam::collisionEvent::ghostBranch
+     && (e.branch < 0 || e.branch >= Foam::collisionOutcome::nBranches)
+    )
+    {
+        os << "branch " << e.branch << " (valid: 0-"
+           << Foam::collisionOutcome::nBranches - 1 << ", "
+           << Foam::collisionEvent::ghostBranch << " ghost)";
+    }
+    else if (e.type < 0 || e.type > 1)
+    {
+        os << "collision type " << e.type << " (valid: 0 sticking,"
+           << " 1 sliding)";
+    }
+    else if (!std::isfinite(e.time))
+    {
+        os << "contact time " << e.time << " (valid: finite)";
+    }
+    for (const Foam::hardSphereState* p : {&e.p1, &e.p2})
+    {
+        if (!os.str().empty())
+        {
+            break;
+        }
+        const int k = p == &e.p1 ? 1 : 2;
+        if (!(std::isfinite(p->d) && p->d > 0))
+        {
+            os << "partner " << k << ": d " << p->d << " (valid: > 0)";
+        }
+        else if (!(std::isfinite(p->rho) && p->rho > 0))
+        {
+            os << "partner " << k << ": rho " << p->rho << " (valid: > 0)";
+        }
+        else if (p->nPrimary < 1)
+        {
+            os << "partner " << k << ": nPrimary " << p->nPrimary
+               << " (valid: >= 1)";
+        }
+        else if
+        (
+            !finiteVector(p->x) || !finiteVector(p->U)
+         || !finiteVector(p->omega)
+        )
+        {
+            os << "partner " << k << ": a position, velocity or spin that"
+               << " is not finite";
+        }
+    }
+    return os.str();
+}
+
+
 //- Check the header of an open file against this machine's
 void checkHeader(std::istream& is, const Foam::fileName& file)
 {
@@ -150,12 +224,33 @@ Foam::collisionEventFile::read(const fileName& file)
 
     List<collisionEvent> events(body/collisionEvent::recordBytes);
     char buf[collisionEvent::recordBytes];
-    for (collisionEvent& e : events)
+    forAll(events, k)
     {
+        collisionEvent& e = events[k];
         is.read(buf, collisionEvent::recordBytes);
         e.unpack(buf);
+
+        // A corrupt record would be replayed as a collision
+        const std::string why(invalidRecord(e));
+        if (!why.empty())
+        {
+            FatalErrorInFunction
+                << "Collision event file " << file << ", record " << k
+                << ": " << why.c_str() << "; the file is corrupt"
+                << exit(FatalError);
+        }
     }
     return events;
+}
+
+
+Foam::label Foam::collisionEventFile::size(const fileName& file)
+{
+    const long long bytes = fileBytes(file);
+    return
+        bytes > static_cast<long long>(headerBytes)
+      ? label((bytes - headerBytes)/collisionEvent::recordBytes)
+      : 0;
 }
 
 

@@ -30,6 +30,7 @@ License
 #include "wallPolyPatch.H"
 #include "clockTime.H"
 #include "fvcCurl.H"
+#include "hardSphereCloudState.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -166,6 +167,11 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
         {
             readOtherPositionForm();
             parcelType::readFields(*this);
+            hardSphereCloudState::check
+            (
+                this->mesh(), this->name(), this->size(), nPrimaries(),
+                parcelType::ownFieldNames()
+            );
             this->deleteLostParticles();
         }
     }
@@ -173,6 +179,36 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::HardSphereCloud<CloudType>::nPrimaries() const
+{
+    label n = 0;
+    for (const parcelType& p : *this)
+    {
+        n += p.nPrimary();
+    }
+    return n;
+}
+
+
+template<class CloudType>
+bool Foam::HardSphereCloud<CloudType>::writeObject
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    const bool ok = CloudType::writeObject(fmt, ver, cmp, valid);
+    hardSphereCloudState::write
+    (
+        this->mesh(), this->name(), this->size(), nPrimaries()
+    );
+    return ok;
+}
+
 
 template<class CloudType>
 void Foam::HardSphereCloud<CloudType>::evolve()

@@ -471,7 +471,7 @@ void Foam::HardSphereCollision<CloudType>::collide()
     // The log goes with the written state
     if (log_.valid() && cloud.db().time().writeTime())
     {
-        log_->flush();
+        log_->write();
     }
 }
 

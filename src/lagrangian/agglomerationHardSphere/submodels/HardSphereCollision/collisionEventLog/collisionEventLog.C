@@ -31,6 +31,8 @@ License
 #include "wallPolyPatch.H"
 #include "OSspecific.H"
 #include "Pstream.H"
+#include "IOdictionary.H"
+#include "cloud.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -64,6 +66,26 @@ Foam::scalarField wallDistance(const Foam::fvMesh& mesh)
     return y.primitiveField();
 }
 
+//- The record of the log at a written time
+Foam::IOobject recordIO
+(
+    const Foam::fvMesh& mesh,
+    const Foam::word& cloudName,
+    const Foam::IOobject::readOption r
+)
+{
+    return Foam::IOobject
+    (
+        "collisionEventLog",
+        mesh.time().timeName(),
+        "uniform"/Foam::cloud::prefix/cloudName,
+        mesh,
+        r,
+        Foam::IOobject::NO_WRITE,
+        false
+    );
+}
+
 } // End anonymous namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -82,6 +104,9 @@ Foam::collisionEventLog::collisionEventLog
     ),
     buffer_(),
     nWritten_(0),
+    cloudName_(cloudName),
+    nInFile_(0),
+    nOthers_(0),
     y_(wallDistance(mesh))
 {
     const fileName dir(folder(mesh.time(), cloudName));
@@ -103,6 +128,46 @@ Foam::collisionEventLog::collisionEventLog
     reduce(removed, sumOp<label>());
     mkDir(dir);
     collisionEventFile::append(file_, List<collisionEvent>());
+    nInFile_ = collisionEventFile::size(file_);
+    if (Pstream::master())
+    {
+        for (const fileName& f : readDir(dir, fileName::FILE))
+        {
+            // events<rank>.bin of a rank this run does not have
+            const std::string rank(f.nameLessExt().substr(6));
+            label r = -1;
+            if
+            (
+                f.hasExt("bin") && f.startsWith("events")
+             && !(readLabel(rank, r) && r >= 0 && r < Pstream::nProcs())
+            )
+            {
+                nOthers_ += collisionEventFile::size(dir/f);
+            }
+        }
+    }
+
+    // The log must hold what it held when the start time was written: a
+    // run from an earlier time cuts it back, and time folders after that
+    // run's end are from the older run
+    IOobject io(recordIO(mesh, cloudName, IOobject::MUST_READ));
+    const label nHeld = returnReduce(nInFile_ + nOthers_, sumOp<label>());
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        const label nRecorded = IOdictionary(io).get<label>("nEvents");
+        if (nHeld != nRecorded)
+        {
+            FatalErrorInFunction
+                << "The collision-event log " << dir << " holds " << nHeld
+                << " events up to time " << mesh.time().timeName()
+                << ", but " << nRecorded << " were logged when this time"
+                << " was written (" << io.objectPath() << "). A run from"
+                << " an earlier time has cut the log back since: the time"
+                << " folders after that run's end are from an older run."
+                << " Remove them and start from the last time that run"
+                << " wrote, or switch eventLog off" << exit(FatalError);
+        }
+    }
 
     Info<< "    eventLog: " << dir << " (time index " << start;
     if (removed)
@@ -168,8 +233,27 @@ void Foam::collisionEventLog::flush()
     {
         collisionEventFile::append(file_, buffer_);
         nWritten_ += buffer_.size();
+        nInFile_ += buffer_.size();
         buffer_.clear();
     }
+}
+
+
+void Foam::collisionEventLog::write()
+{
+    flush();
+    IOdictionary record(recordIO(mesh_, cloudName_, IOobject::NO_READ));
+    record.add
+    (
+        "nEvents", returnReduce(nInFile_ + nOthers_, sumOp<label>())
+    );
+    record.regIOobject::writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
 }
 
 

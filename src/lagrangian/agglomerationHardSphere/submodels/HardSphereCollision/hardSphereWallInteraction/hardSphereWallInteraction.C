@@ -126,6 +126,40 @@ Foam::hardSphereWallInteraction::hardSphereWallInteraction
 
         models_.set(patchi, wallCollisionModel::New(ePtr->dict()));
     }
+
+    // Every entry of walls names at least one wall patch and is a valid
+    // wall model: a misspelt patch name would otherwise leave its patch
+    // to another entry (or ".*") silently
+    wordList wallNames;
+    forAll(pbm, patchi)
+    {
+        if (isA<wallPolyPatch>(pbm[patchi]))
+        {
+            wallNames.append(pbm[patchi].name());
+        }
+    }
+    for (const entry& e : wallsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(wallsDict)
+                << "walls entry " << e.keyword() << " is not a dictionary"
+                << " with a wallModel" << exit(FatalIOError);
+        }
+        bool matches = false;
+        for (const word& w : wallNames)
+        {
+            matches = matches || e.keyword().match(w);
+        }
+        if (!matches)
+        {
+            FatalIOErrorInFunction(wallsDict)
+                << "walls entry " << e.keyword() << " matches no wall"
+                << " patch; the wall patches are " << wallNames
+                << exit(FatalIOError);
+        }
+        wallCollisionModel::New(e.dict());
+    }
 }
 
 
