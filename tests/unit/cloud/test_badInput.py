@@ -316,6 +316,9 @@ FIELD_CASES = {
     "nPrimaryEmpty": ("nPrimary", "0()", "nPrimary"),
     "omegaShort": ("omega", "1((0 0 0))", "omega"),
     "positionsEmpty": ("positions", "0()", "positions"),
+    # a primary of another density than the material's rho0 (2200): the
+    # structure model would build its agglomerates from rho0, silently
+    "rhoNotRho0": ("rho", "2(2200 1000)", "rho0 = 2200"),
 }
 
 

@@ -172,6 +172,7 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
                 this->mesh(), this->name(), this->size(), nPrimaries(),
                 parcelType::ownFieldNames()
             );
+            collisionModel_->checkParticles();
             this->deleteLostParticles();
         }
     }

@@ -113,6 +113,40 @@ void Foam::HardSphereCollision<CloudType>::audit
 }
 
 
+template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::checkParticles() const
+{
+    if (kernel_.agglomeration().type() == "none")
+    {
+        return;
+    }
+    const scalar rho0 = kernel_.material().rho0();
+    const bool vsm = kernel_.structure().type() == "VSM";
+    label i = 0;
+    for (const parcelType& p : this->owner())
+    {
+        if
+        (
+            (p.nPrimary() == 1 || vsm)
+         && mag(p.rho() - rho0) > 1e-9*rho0
+        )
+        {
+            FatalErrorInFunction
+                << "Cloud " << this->owner().name() << ": particle " << i
+                << " (nPrimary " << p.nPrimary() << ") has rho = "
+                << p.rho() << " in "
+                << this->owner().time().timeName()/cloud::prefix
+                  /this->owner().name()/"rho" << ", but the material of"
+                << " hardSphereCoeffs has rho0 = " << rho0 << ": "
+                << (vsm ? "under VSM every particle" : "a primary")
+                << " has the material's density (the structure model"
+                << " builds agglomerates from rho0)" << exit(FatalError);
+        }
+        ++i;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
