@@ -93,6 +93,7 @@ using namespace Foam;
 
 #include "replayConfiguration.H"
 #include "writeEvents.H"
+#include "writeReplay.H"
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -335,124 +336,11 @@ int main(int argc, char *argv[])
         }
     }
 
-    // Table
-    Info<< nl << "hardSphereReplay: " << events.size() << " events ("
-        << which << ") of " << nFiles << " log file(s) in " << dir << nl
-        << nl;
-    {
-        std::ostringstream os;
-        os  << std::setw(20) << "configuration" << std::setw(9) << "events"
-            << std::setw(8) << "agg" << std::setw(14) << "alpha"
-            << "  95 % interval   not approaching";
-        Info<< os.str().c_str() << nl;
-    }
-    for (const replayResult& r : results)
-    {
-        scalar lo, hi;
-        wilson(r.agglomerations, r.events, lo, hi);
-        std::ostringstream os;
-        os  << std::setw(20) << r.name << std::setw(9) << r.events
-            << std::setw(8) << r.agglomerations << std::setw(14)
-            << num(r.events ? scalar(r.agglomerations)/r.events : NaN)
-            << "  " << num(lo) << " - " << num(hi) << "   "
-            << r.notApproaching;
-        Info<< os.str().c_str() << nl;
-    }
-
-    // JSON
-    const fileName jsonTmp(jsonOut + ".tmp");
-    OFstream js(jsonTmp);
-    js  << "{\n  \"case\": \"" << runTime.globalPath().c_str() << "\",\n"
-        << "  \"cloud\": \"" << cloudName.c_str() << "\",\n"
-        << "  \"logFiles\": " << nFiles << ",\n"
-        << "  \"selection\": \"" << which.c_str() << "\",\n"
-        << "  \"events\": " << events.size() << ",\n"
-        << "  \"configurations\": [\n";
-    forAll(results, c)
-    {
-        const replayResult& r = results[c];
-        scalar lo, hi;
-        wilson(r.agglomerations, r.events, lo, hi);
-        js  << "    {\"name\": \"" << r.name.c_str() << "\", \"source\": \""
-            << r.source.c_str() << "\", \"events\": " << r.events
-            << ", \"agglomerations\": " << r.agglomerations
-            << ", \"alpha\": "
-            << num(r.events ? scalar(r.agglomerations)/r.events : NaN).c_str()
-            << ", \"alphaLow\": " << num(lo).c_str()
-            << ", \"alphaHigh\": " << num(hi).c_str()
-            << ", \"notApproaching\": " << r.notApproaching
-            << ", \"branches\": {";
-        for (label b = 0; b < collisionOutcome::nBranches; ++b)
-        {
-            js  << (b ? ", " : "") << "\""
-                << collisionOutcome::branchTypeNames
-                   [collisionOutcome::branchType(b)].c_str()
-                << "\": " << r.branches[b];
-        }
-        js  << "}";
-        if (r.compared)
-        {
-            js  << ", \"compared\": " << r.compared << ", \"matches\": "
-                << r.matches;
-        }
-        js  << "}" << (c + 1 < results.size() ? "," : "") << "\n";
-    }
-    js  << "  ],\n  \"base\": \"" << results[base].name.c_str()
-        << "\",\n  \"paired\": [\n";
-    if (results.size() > 1)
-    {
-        Info<< nl << "paired with " << results[base].name << ":" << nl;
-    }
-    label nPaired = 0;
-    forAll(results, c)
-    {
-        if (c == base)
-        {
-            continue;
-        }
-        const replayResult& A = results[base];
-        const replayResult& B = results[c];
-        label n11 = 0, n10 = 0, n01 = 0;
-        forAll(events, k)
-        {
-            n11 += A.agglomerated[k] && B.agglomerated[k];
-            n10 += A.agglomerated[k] && !B.agglomerated[k];
-            n01 += !A.agglomerated[k] && B.agglomerated[k];
-        }
-        // Ratio of two proportions on the same events (delta method)
-        const scalar a = n11 + n10, b = n11 + n01;
-        scalar ratio = NaN, lo = NaN, hi = NaN;
-        if (a > 0 && b > 0)
-        {
-            ratio = b/a;
-            const scalar s = std::sqrt((n10 + n01)/(a*b));
-            lo = ratio*std::exp(-1.959963984540054*s);
-            hi = ratio*std::exp(1.959963984540054*s);
-        }
-        Info<< "    " << B.name << ": differ on " << n10 + n01
-            << " events (" << n10 << " only " << A.name << ", " << n01
-            << " only " << B.name << "), alpha ratio " << num(ratio).c_str()
-            << " (" << num(lo).c_str() << " - " << num(hi).c_str() << ")" << nl;
-        js  << "    {\"a\": \"" << A.name.c_str() << "\", \"b\": \""
-            << B.name.c_str() << "\", \"both\": " << n11
-            << ", \"onlyA\": " << n10 << ", \"onlyB\": " << n01
-            << ", \"ratio\": " << num(ratio).c_str() << ", \"ratioLow\": "
-            << num(lo).c_str() << ", \"ratioHigh\": " << num(hi).c_str()
-            << "}" << (++nPaired + 1 < results.size() ? "," : "") << "\n";
-    }
-    js  << "  ]\n}\n";
-    js.flush();
-    if (!js.good())
-    {
-        FatalErrorInFunction
-            << "Writing " << jsonTmp << " failed" << exit(FatalError);
-    }
-    if (!Foam::mv(jsonTmp, jsonOut))
-    {
-        FatalErrorInFunction
-            << "Cannot move " << jsonTmp << " to " << jsonOut
-            << exit(FatalError);
-    }
+    writeReplay
+    (
+        events, results, base, which, nFiles, dir, runTime.globalPath(),
+        cloudName, jsonOut
+    );
 
     if (keepEvents)
     {

@@ -114,3 +114,16 @@ def test_processor_without_particles(case_dir, foam_env):
     # one processor folder without its particles: fewer in all than written
     shutil.rmtree(c / "processor1" / "0.004" / "lagrangian")
     fails_naming(restart(c, parallel=2), "particles read, but")
+
+
+def test_time_of_a_version_without_the_record(written, case_dir):
+    """A time written before the record existed (the cloud's uniform
+    folder there, the record not) restarts, with a warning."""
+    c = copy(written, case_dir)
+    for f in c.glob("*/uniform/lagrangian/kinematicCloud/"
+                    "hardSphereCloudState"):
+        f.unlink()
+    assert times.incomplete_time(c) is None
+    res = restart(c)
+    assert res.returncode == 0, res.stdout[-2000:]
+    assert "written by a version without it" in res.stdout

@@ -121,7 +121,7 @@ def read_replay_events(path):
 def replay_events(case, variants, cloud="kinematicCloud", events="all"):
     """Replay with the per-event output: (the JSON result, the columns of
     read_replay_events)."""
-    f = folder(case, cloud) / f"replay-{events}-events.csv"
+    f = folder(Path(case).resolve(), cloud) / f"replay-{events}-events.csv"
     res = replay(case, variants, cloud, events, events_out=f)
     return res, read_replay_events(f)
 

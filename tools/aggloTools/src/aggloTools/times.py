@@ -60,7 +60,9 @@ def _clouds_incomplete(folder):
         have = ({f.name for f in (lag / name).iterdir()}
                 if (lag / name).is_dir() else set())
         if not rec.is_file():
-            if have & OWN_FIELDS:
+            # the parcel's fields without the cloud's uniform folder: lost
+            # (a version without the record keeps the folder)
+            if have & OWN_FIELDS and not (uni / name).is_dir():
                 return True
             continue
         n = _record_count(rec)

@@ -34,7 +34,10 @@ License
 
 // * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
-const Foam::word Foam::hardSphereCloudState::fileName("hardSphereCloudState");
+const Foam::word Foam::hardSphereCloudState::recordName
+(
+    "hardSphereCloudState"
+);
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -51,7 +54,7 @@ Foam::IOobject recordIO
 {
     return Foam::IOobject
     (
-        Foam::hardSphereCloudState::fileName,
+        Foam::hardSphereCloudState::recordName,
         mesh.time().timeName(),
         "uniform"/Foam::cloud::prefix/cloudName,
         mesh,
@@ -149,8 +152,23 @@ void Foam::hardSphereCloudState::check
     if (!anywhere)
     {
         // Only a solver-written time with the parcel's own fields must
-        // have the record: its uniform folder was lost
-        if (solverTime && there.size())
+        // have the record: its uniform folder was lost. A time written
+        // before the record existed has the cloud's uniform folder
+        // (cloudProperties) without it: read as before, with a warning
+        const fileName uniformDir
+        (
+            time.timePath()/"uniform"/cloud::prefix/cloudName
+        );
+        if (solverTime && there.size() && isDir(uniformDir))
+        {
+            WarningInFunction
+                << "Cloud " << cloudName << " at time " << time.timeName()
+                << ": no record " << recordName << " in " << uniformDir
+                << " (written by a version without it): the particles"
+                << " read are not checked against what was written"
+                << endl;
+        }
+        else if (solverTime && there.size())
         {
             FatalErrorInFunction
                 << "Cloud " << cloudName << " at time " << time.timeName()
