@@ -162,12 +162,30 @@ def read_profiles(p, adir, cloud):
     return t
 
 
+def step_values(log, pattern):
+    """The values of a pattern in a solver log, every match of every time
+    step in order; a run resumed with -append repeats the steps after its
+    last write, and those repeated steps replace the killed run's (later
+    wins)."""
+    steps = []          # (time, [values])
+    for line in log.splitlines():
+        if line.startswith("Time = "):
+            t = float(line.split()[2])
+            while steps and steps[-1][0] >= t:
+                steps.pop()
+            steps.append((t, []))
+        elif steps:
+            m = re.search(pattern, line)
+            if m:
+                steps[-1][1].append(float(m.group(1)))
+    return [v for _, vals in steps for v in vals]
+
+
 def u_tau(p, case):
     """u_tau from the mean driving gradient over the second half of the
     stage in case (fluid check of doc/cases.md A.10): u_tau^2 = delta <G>."""
     log = (case / "log.aggloPimpleFoam").read_text(errors="replace")
-    g = np.array([float(x) for x in
-                  re.findall(r"pressure gradient = ([-0-9.eE+]+)", log)])
+    g = np.array(step_values(log, r"pressure gradient = ([-0-9.eE+]+)"))
     if not len(g):
         return None, None
     g = g[len(g) // 2:]
@@ -497,23 +515,24 @@ def compare(rows, ref_file):
     reference's (same check: value and status then and now)."""
     if not ref_file.is_file():
         return f"no committed reference {ref_file}"
-    ref = {r["check"]: r for r in json.loads(ref_file.read_text())
+    ref = {r["quantity"]: r for r in json.loads(ref_file.read_text())
            .get("regression", [])}
     lines = [f"This report against the committed reference {ref_file}:",
              f"{'check':<58} {'value':>11} {'reference':>11}  status"
              "  (reference)"]
     same = 0
+    def val(x):
+        return f"{x:.4g}" if isinstance(x, (int, float)) else "-"
+
     for r in rows:
-        o = ref.get(r["check"])
-        val = lambda x: (f"{x:.4g}" if isinstance(x, (int, float))
-                         else str(x))
+        o = ref.get(r["quantity"])
         if o is None:
-            lines.append(f"{r['check'][:58]:<58} {val(r['value']):>11} "
+            lines.append(f"{r['quantity'][:58]:<58} {val(r['sim']):>11} "
                          f"{'-':>11}  {r['status']}  (not in the reference)")
             continue
         same += o["status"] == r["status"]
-        lines.append(f"{r['check'][:58]:<58} {val(r['value']):>11} "
-                     f"{val(o['value']):>11}  {r['status']}  ({o['status']})")
+        lines.append(f"{r['quantity'][:58]:<58} {val(r['sim']):>11} "
+                     f"{val(o['sim']):>11}  {r['status']}  ({o['status']})")
     lines.append(f"{same} of {len(rows)} rows with the reference's status")
     return "\n".join(lines)
 

@@ -115,6 +115,11 @@ def test_statistics_complete_and_consistent(smoke_runs, np_):
             (math.pi / 6 * dfin**3).sum() / (Lx * Ly * Lz), rel=0.01)
     summary = json.loads((case / "runs/smoke/report/summary.json").read_text())
     assert not [r for r in summary["regression"] if r["status"] == "FAIL"]
+    # the run's report goes beside the committed reference, never into it
+    assert not (case / "results").exists()
+    assert "no committed reference" in (
+        case / "runs/smoke/report/comparison.txt").read_text()
+    assert (case / "runs/smoke/report/particlesC1EAM.png").is_file()
 
 
 @pytest.mark.parametrize("np_", [1, 2])
@@ -286,3 +291,18 @@ def test_release_into_processors_is_the_serial_release(smoke_runs):
     assert np.array_equal(np.array([got[k][1] for k in ids]),
                           Uf[grid.cell(x)])
     assert not np.array_equal(Uf[grid.cell(x)], U)      # a different LES
+
+
+def test_resumed_log_counts_each_step_once():
+    """A run resumed with -append repeats the steps after its last write
+    in the log: the u_tau check reads each step's gradients once, the
+    resumed run's (channelPost.step_values)."""
+    tutorial_module("verticalChannel", "channel")
+    post = tutorial_module("verticalChannel", "channelPost")
+    steps = [(1, [10, 11]), (2, [20, 21]), (3, [30, 31]),     # killed
+             (2, [22, 23]), (3, [32, 33]), (4, [40, 41])]     # resumed
+    log = "".join(f"Time = {t}\n" + "".join(
+        f"Pressure gradient source: uncorrected Ubar = 1, pressure "
+        f"gradient = {g}\n" for g in gs) for t, gs in steps)
+    assert post.step_values(log, r"pressure gradient = ([-0-9.eE+]+)") \
+        == [10, 11, 22, 23, 32, 33, 40, 41]
