@@ -26,6 +26,8 @@ from aggloTools import (cloud, fields, placement, progress as prog,
                         regression as reg, render, stats, times)
 from aggloTools.foamfile import check_keys, read_dict
 
+import shearStatements
+
 HERE = Path(__file__).resolve().parent
 
 # Physical data of doc/cases.md B.1 (the case files hold the same values)
@@ -78,7 +80,7 @@ PRESET_KEYS = {"nx", "LxByDelta", "nParticles", "endGamma",
                "detectEndGamma", "detectDtGamma", "writes", "eventLog"}
 COMMON_KEYS = {"gammaDot", "delta", "LzByDelta", "ny", "nz", "dParticle",
                "seed", "dtGamma", "detectDtGamma", "countFromGamma",
-               "eventLog"}
+               "eventLog", "fluidTorque"}
 
 
 def presets():
@@ -96,8 +98,69 @@ def on_off(v, where):
     return v
 
 
-def settings(preset, run):
-    """The caseSettings dictionary of one run of a preset."""
+#: The readings a study may vary (shearStudy.py), with their values; the
+#: first value is the study's baseline (the tutorial's default before the
+#: study; the tutorial's own readings are those of presets/common and the
+#: models' defaults: tutorial_readings). impactVelocity<model>: v_E or v_M
+#: of the model's coefficients (doc/models.md 2.2, 3.2); fluidTorque: the
+#: rotationModel (on: fluidTorque, off: none; doc/models.md 8.5);
+#: tangentialProjection: of the EAM (doc/models.md 2.5); overlapTreatment
+#: (doc/models.md 6.6); dtGamma: the step of the EAM and MAM runs.
+READINGS = {
+    "impactVelocityEAM": ("normal", "full"),
+    "impactVelocityMAM": ("normal", "full"),
+    "fluidTorque": ("on", "off"),
+    "tangentialProjection": ("paper", "full"),
+    "overlapTreatment": ("none", "separate"),
+    "dtGamma": None,
+}
+
+
+def check_reading(variant, where):
+    """Stop on an unknown reading or value, naming it and the choices."""
+    check_keys(variant, set(READINGS), where)
+    for k, v in variant.items():
+        choices = READINGS[k]
+        if choices is None:
+            if not (isinstance(v, (int, float)) and 0 < v <= 0.1):
+                raise SystemExit(f"{where}: {k} {v!r} is not a number in "
+                                 "(0, 0.1]")
+        elif v not in choices:
+            raise SystemExit(f"{where}: {k} '{v}' is not one of: "
+                             + " ".join(choices))
+
+
+def tutorial_readings():
+    """The tutorial's own readings: presets/common's fluidTorque and
+    dtGamma, the models' defaults for the rest."""
+    c = presets()["common"]
+    out = {k: v[0] for k, v in READINGS.items() if v}
+    out["fluidTorque"] = on_off(c["fluidTorque"], "presets/common: "
+                                "fluidTorque")
+    out["dtGamma"] = float(c["dtGamma"])
+    return out
+
+
+def kernel_coeffs(model, variant):
+    """The <model>Coeffs entries a variant sets (merged into the cloud's
+    hardSphereCoeffs through caseSettings' kernelCoeffs): only those of
+    the run's own model, since the other model's are unknown entries."""
+    c = {}
+    if model in ("EAM", "MAM"):
+        iv = variant.get(f"impactVelocity{model}", "normal")
+        if iv != "normal":
+            c["impactVelocity"] = iv
+    if model == "EAM" and variant.get("tangentialProjection",
+                                      "paper") != "paper":
+        c["tangentialProjection"] = variant["tangentialProjection"]
+    return {f"{model}Coeffs": c} if c else {}
+
+
+def settings(preset, run, variant=None):
+    """The caseSettings dictionary of one run of a preset; variant: the
+    readings that differ from the default (READINGS)."""
+    check_reading(dict(variant or {}), f"variant of {preset}/{run}")
+    variant = dict(tutorial_readings(), **(variant or {}))
     ps = presets()
     if preset not in ps or preset == "common":
         raise SystemExit(f"unknown preset {preset!r}: valid presets are "
@@ -109,7 +172,7 @@ def settings(preset, run):
     gamma, delta = float(c["gammaDot"]), float(c["delta"])
     detect = run == "detect"
     dt_g = float(p.get("detectDtGamma", c["detectDtGamma"]) if detect
-                 else c["dtGamma"])
+                 else variant["dtGamma"])
     end_g = float(p["detectEndGamma"] if detect else p["endGamma"])
     steps = round(end_g / dt_g)
     dt = dt_g / gamma
@@ -130,17 +193,28 @@ def settings(preset, run):
         "collisionResponse": "ghost" if detect else "physical",
         "eventLog": on_off(p.get("eventLog", c["eventLog"]),
                            f"presets/{preset}: eventLog"),
+        "rotationModel": ("none" if variant.get("fluidTorque") == "off"
+                          else "fluidTorque"),
+        "overlapTreatment": variant.get("overlapTreatment", "none"),
+        "kernelCoeffs": kernel_coeffs(model, variant),
     }
 
 
 def settings_text(s):
     lines = ["// Written by shearFlow.py settings for the preset "
              f"{s['preset']}, run {s['run']}", ""]
+    def body(d):
+        return " ".join(f"{k} {{ {body(v)} }}" if isinstance(v, dict)
+                        else f"{k} {v};" for k, v in d.items())
+
     for k, v in s.items():
         if k in ("preset", "run"):
             continue
-        lines.append(f"{k:<20}{v!r};" if isinstance(v, float)
-                     else f"{k:<20}{v};")
+        if isinstance(v, dict):
+            lines.append(f"{k:<20}{{ {body(v)} }}")
+        else:
+            lines.append(f"{k:<20}{v!r};" if isinstance(v, float)
+                         else f"{k:<20}{v};")
     return "\n".join(lines)
 
 
@@ -148,7 +222,8 @@ SETTINGS_KEYS = {"preset", "run", "gammaDot", "delta", "yMin", "uWall",
                  "uLower", "Lx", "Lz", "nx", "ny", "nz", "nParticles",
                  "dParticle", "seed", "deltaT", "endTime", "writeInterval",
                  "countFrom", "agglomerationModel", "collisionResponse",
-                 "eventLog"}
+                 "eventLog", "rotationModel", "overlapTreatment",
+                 "kernelCoeffs"}
 
 
 def read_settings(case):
@@ -385,18 +460,19 @@ def post(preset, runs_dir=None, out_dir=None):
                              and np.all(np.diff(r.np_after) <= 0))))
 
     if len(phys) == 2:
-        e, m = summary["runs"]["EAM"], summary["runs"]["MAM"]
-        gated = preset in ("paper", "medium")
-        rows.append(row("N_col(EAM) > N_col(MAM)"
-                        + ("" if gated else " (not resolved at this preset)"),
-                        e["N_col"] / max(1.0, m["N_col"]), ">1", "-",
-                        e["N_col"] > m["N_col"] if gated else None))
-        rows.append(row("N_agg(EAM)/N_agg(MAM) (target 0.85-1.15)",
-                        e["N_agg"] / max(1.0, m["N_agg"]), 1.0, "0.85-1.15",
-                        None))
-        rows.append(row("|alpha-alpha_th|: MAM <= EAM (target)",
-                        abs(m["alpha"] - a_th) - abs(e["alpha"] - a_th),
-                        "<=0", "-", None))
+        # The paper's statements S1-S4 (shearStatements.py): the same rows
+        # as the study's, judged on this preset's runs
+        t_end_g = min(runs[k].tg[-1] for k in ("EAM", "MAM"))
+        short = (f"the paper's statements concern t*gammaDot = "
+                 f"{shearStatements.PAPER_END:g}; this preset ends at "
+                 f"{t_end_g:g}" if t_end_g < shearStatements.PAPER_END
+                 * (1 - 1e-6) else None)
+        for r in shearStatements.statements(
+                {k: runs[k] for k in ("EAM", "MAM")}, a_th, short):
+            rows.append(row(f"{r['statement']}: {r['check']}", r["value"],
+                            "-", r["tolerance"],
+                            {reg.PASS: True, reg.FAIL: False}.get(
+                                r["status"]), nr=r.get("reason")))
     summary["alpha_band"] = band
     summary["sigma_alpha_rel"] = sig_a
     summary["regression"] = rows

@@ -20,6 +20,7 @@ import pytest
 from aggloTools.runner import project_dir, tutorial_module
 
 TUT = project_dir() / "tutorials" / "shearFlowValidation"
+tutorial_module("shearFlowValidation", "shearStatements")
 shearFlow = tutorial_module("shearFlowValidation", "shearFlow")
 
 
@@ -164,3 +165,83 @@ def test_ci_replay_of_the_event_logs(ci_results):
         a = [conf[f"{m}{e}"]["agglomerations"] for e in ("097", "080", "060")]
         assert a[0] <= a[1] <= a[2], (m, a)
 
+
+
+# ---------------------------------------------------- the readings study
+
+STUDY_CI = """
+matrix { impactVelocity (normal); fluidTorque (on off);
+         dtGamma (0.005 0.02); }
+"""
+
+
+@pytest.fixture(scope="module")
+def ci_study(tmp_path_factory, foam_env):
+    """./Allrun -study -preset ci on a four-variant study (fluid torque
+    on and off, dt*gammaDot 0.005 and 0.02: the study's baseline and the
+    tutorial's default among them) in a copy of the tutorial."""
+    tut = tmp_path_factory.mktemp("shearStudy") / "shearFlowValidation"
+    shutil.copytree(TUT, tut, ignore=shutil.ignore_patterns(
+        "runs", "__pycache__"))
+    (tut / "study").write_text(STUDY_CI)
+    res = subprocess.run(["./Allrun", "-study", "-preset", "ci"], cwd=tut,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=1800)
+    (tut / "log.Allrun").write_text(res.stdout)
+    out = tut / "results" / "study-ci"
+    assert res.returncode == 0, res.stdout[-3000:]
+    return json.loads((out / "study.json").read_text()), tut
+
+
+def test_ci_study_counts(ci_study):
+    """Each variant's counts add up by category (the event log against the
+    statistics' counters), and the tutorial's default variant is the
+    tutorial's own ci run: the committed results/ci counts, exactly."""
+    study, tut = ci_study
+    names = [v["name"] for v in study["variants"]]
+    assert names == ["normal-torque-dt0.005", "normal-torque-dt0.02",
+                     "normal-noTorque-dt0.005", "normal-noTorque-dt0.02"]
+    assert study["default"] == "normal-noTorque-dt0.02"
+    ci = json.loads((tut / "results/ci/summary.json").read_text())
+    ref = ci["runs"]
+    for v in study["variants"]:
+        assert set(v["statements"]) == {"S1", "S2", "S3", "S4"}
+        assert set(v["statements"].values()) <= {"PASS", "FAIL", "n/r"}
+        for m in ("EAM", "MAM"):
+            r = v[m]
+            cats = ("first", "repeat", "overlapStart")
+            assert sum(r[f"N_col_{c}"] for c in cats) == r["N_col"]
+            assert sum(r[f"N_agg_{c}"] for c in cats) == r["N_agg"]
+            # every agglomeration removes one particle
+            assert r["Np_final_over_Np0"] == pytest.approx(
+                1 - r["N_agg"] / ci["N0"], abs=1e-12)
+    d = study["variants"][3]
+    for m in ("EAM", "MAM"):
+        assert d[m]["N_col"] == ref[m]["N_col"]
+        assert d[m]["N_agg"] == ref[m]["N_agg"]
+        assert d[m]["N_col_first"] == ref[m]["N_col_first"]
+
+
+def test_ci_study_undisturbed_and_diagnosis(ci_study):
+    """The undisturbed ensemble (without fluid torque) replayed through
+    the default kernels is the committed ci replay of the tutorial's
+    detect run (EAM097, MAM097: the same kernels on the same first
+    contacts); the diagnosis of the baseline EAM run replays its own
+    kernel, so its agglomerating fraction per category is the run's
+    own."""
+    study, tut = ci_study
+    rep = json.loads((tut / "results/ci/replay.json").read_text())
+    conf = {c["name"]: c for c in
+            rep["ensembles"]["detect"]["configurations"]}
+    d = study["variants"][3]
+    for m in ("EAM", "MAM"):
+        assert d["undisturbedAlphaFirst"][m] == pytest.approx(
+            conf[f"{m}097"]["alpha"], rel=1e-9)
+    d = study["variants"][0]
+    diag = study["diagnosis"]["Baseline"]
+    for cat in ("first", "repeat", "overlapStart"):
+        n = d["EAM"][f"N_col_{cat}"]
+        assert diag[cat]["events"] == n
+        if n:
+            assert diag[cat]["alpha_EAMnormal"] == pytest.approx(
+                d["EAM"][f"N_agg_{cat}"] / n, rel=1e-12)
