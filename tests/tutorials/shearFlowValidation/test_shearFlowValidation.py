@@ -205,7 +205,7 @@ def test_ci_study_counts(ci_study):
     ci = json.loads((tut / "results/ci/summary.json").read_text())
     ref = ci["runs"]
     for v in study["variants"]:
-        assert set(v["statements"]) == {"S1", "S2", "S3", "S4"}
+        assert set(v["statements"]) == {"S1", "S1b", "S2", "S3", "S4"}
         assert set(v["statements"].values()) <= {"PASS", "FAIL", "n/r"}
         for m in ("EAM", "MAM"):
             r = v[m]
