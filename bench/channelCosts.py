@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Measured costs of the verticalChannel presets (issue 19 item 3): short
+"""Measured costs of the verticalChannel presets: short
 runs of every stage of configuration C1, serially and on MPI ranks, with
 the same inputs, sizes and code paths as ./Allrun of the tutorial.
 

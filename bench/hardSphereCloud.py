@@ -25,7 +25,7 @@ N = 1e4, 1e5, 1e6; 21 steps each (300 at 1e4, 30 at 1e5). For each case it runs:
 
 and prints per particle-step [us] (first step apart: it is the set-up),
 memory per particle (resident memory while stepping, minus the empty
-case's), and the ratios of the targets (issue 18): collision stage
+case's), and the ratios of the pair search's targets: collision stage
 <= 0.10 us and <= 10 % of tracking for N >= 1e5 at the paper's density;
 per-particle cost flat within 30 % from 1e4 to 1e6; our tracking <= 1.10 x
 stock; memory <= 300 B per particle at 1e6; first step <= 2 x an ordinary
@@ -338,7 +338,7 @@ def main():
                       f" x particleGrid), first step {r['il_first']:.2f} x "
                       "an ordinary step", flush=True)
 
-    print("\nTargets (issue 18):")
+    print("\nTargets of the particle-scale pair search:")
     for r in results:
         tag = f"N={r['N']:.0e}, {r['density']} x paper density"
         if r["N"] >= 100000 and r["density"] == 1:

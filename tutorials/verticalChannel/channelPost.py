@@ -25,7 +25,7 @@ from aggloTools.stats import last_output, read_stats, read_table
 
 HERE = channel.HERE
 
-# Table D.6 (reference-results.md section 3): f_col, f_agg per model
+# AB16 Tab. D.6: f_col, f_agg per model
 TABLE_D6 = {
     "C1": {"fcol": {"EAM": 8.14e4, "MAM": 7.79e4},
            "fagg": {"EAM": 6.67e2, "MAM": 5.39e2}},
@@ -40,7 +40,7 @@ TABLE_D6 = {
 RATIOS = (("C2", "C1", "with/without sub-models"),
           ("C3", "C2", "rough/smooth wall"),
           ("C4", "C2", "4 um/12 um"))
-REL_TOL = 0.15      # reference-results.md section 6 (small, medium)
+REL_TOL = 0.15      # tolerance of the ratios (doc/cases.md A.9)
 ABS_TOL = {"col": 0.15, "agg": 0.30}    # section 6, paper: Table D.6
 N_BATCH = 10
 
@@ -249,7 +249,7 @@ def regression(p, res):
     models = ("EAM", "MAM")
     # absolute frequencies, scaled: against Table D.6 at `paper` (f_col
     # within 15 %, f_agg within 30 %), reported but not gated at the other
-    # presets (reference-results.md 6)
+    # presets (doc/cases.md A.9)
     for (c, m), r in sorted(res.items()):
         ref = TABLE_D6.get(c)
         for q in ("col", "agg"):
@@ -357,7 +357,7 @@ def write_regression(path, p, rows, fluid):
              f"scaled to the paper by s^2 = (6e6/N)^2 ="
              f" {(channel.N_PAPER / p['nParticles'])**2:g};"
              " ratios pass if |sim - paper| <= max(3 sigma, 15 % paper)"
-             " (reference-results.md 6), sigma from batch means",
+             " (doc/cases.md A.9), sigma from batch means",
              f"(10 sub-windows) or Poisson, whichever is larger."
              " Absolute scaled frequencies are gated only at `paper`.",
              ""]

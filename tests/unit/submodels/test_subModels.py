@@ -1,4 +1,4 @@
-"""Fluid-particle sub-models through the solver (issue 5): each test
+"""Fluid-particle sub-models through the solver: each test
 compares the cloud with an independent number.
 
 - Schiller-Naumann terminal velocity of a heavy particle (1 %);
@@ -299,7 +299,7 @@ def test_sgs_tracers_well_mixed(case_dir, foam_env, flow):
 
     couette: uniform shear, uniform sigma: the concentration stays uniform
     within 10 % per bin (measured: at most 6.7 %, a slight excess on the
-    centre line; the issue's 5 % is not met, see the issue 5 note). With
+    centre line: a 5 % tolerance would not be met). With
     wallReflection off the wall bins gain 25 %.
     poiseuille: sigma ~ |y'| vanishes on the centre line; the model has no
     drift term ~ grad(sigma^2), so tracers collect where sigma is small.

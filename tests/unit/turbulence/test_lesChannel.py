@@ -1,5 +1,5 @@
 """Short LES of the paper's vertical channel on a coarse mesh with every
-sub-model on (issue 5): Smagorinsky (C_s = 0.065) with the vanDriestDamped
+sub-model on: Smagorinsky (C_s = 0.065) with the vanDriestDamped
 delta, constant mass flux through meanVelocityForce, gravity along +x on
 the particles only, two-way coupling, Schiller-Naumann drag, Saffman-Mei
 and rotation lift, fluid torque, Pozorski-Apte SGS velocity, EAM, sandgrain
