@@ -2,8 +2,9 @@
 """verticalChannel: set-up and post-processing of the paper's main case
 (downward turbulent channel flow; doc/cases.md Part A).
 
-    channel.py settings PRESET CONFIG STAGE [MODEL ...]
-                                  caseSettings of one stage (stdout)
+    channel.py settings [-np N] PRESET CONFIG STAGE [MODEL ...]
+                                  caseSettings of one stage (stdout) for
+                                  N MPI ranks (default 1)
     channel.py init CASE          initial flow: mean profile plus seeded
                                   divergence-free perturbations (at time 0)
     channel.py release CASE       the particles of the case's configuration
@@ -35,7 +36,6 @@ two-way coupled ones; counters zeroed at its start).
 """
 
 import math
-import os
 import shutil
 import sys
 import time as time_module
@@ -529,9 +529,19 @@ def main(argv):
         return 1
     cmd = argv[1]
     if cmd == "settings":
-        nprocs = int(os.environ.get("CHANNEL_NPROCS", "1"))
-        sys.stdout.write(settings(argv[2], argv[3], argv[4],
-                                  tuple(argv[5:]), nprocs))
+        args = argv[2:]
+        nprocs = 1
+        if args[:1] == ["-np"]:
+            if len(args) < 2 or not args[1].isdigit() or int(args[1]) < 1:
+                sys.exit("channel.py settings: -np needs a positive"
+                         " number of ranks")
+            nprocs = int(args[1])
+            args = args[2:]
+        if len(args) < 3:
+            print(__doc__)
+            return 1
+        sys.stdout.write(settings(args[0], args[1], args[2],
+                                  tuple(args[3:]), nprocs))
     elif cmd == "init":
         init(argv[2])
     elif cmd == "release":

@@ -30,9 +30,12 @@ DTYPE = np.dtype(
     + [("nPrimary1", "<i4"), ("nPrimary2", "<i4"),
        ("wallDistance", "<f4")])
 
+#: Contact categories, by code (encounterMemory::categoryType)
 CATEGORIES = ("first", "repeat", "overlapStart")
-BRANCHES = ("rebound", "agglomerate", "Eq21", "Eq65", "caseI", "caseII",
-            "caseIIIRebound")
+#: Kernel branches, by code, as the C++ names them
+#: (collisionOutcome::branchTypeNames; hardSphereReplay's JSON keys)
+BRANCHES = ("rebound", "agglomerate", "eq21", "eq65", "caseI", "caseII",
+            "caseIIIrebound")
 GHOST = 255
 
 

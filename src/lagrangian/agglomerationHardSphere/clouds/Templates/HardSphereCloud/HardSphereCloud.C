@@ -73,28 +73,6 @@ void Foam::HardSphereCloud<CloudType>::setModels()
         ).ptr()
     );
 
-    // A particle reaching a wall that nothing handles would be tracked
-    // into it forever
-    if
-    (
-        !collisionModel_->active()
-     && this->patchInteraction().type() == "none"
-    )
-    {
-        for (const polyPatch& pp : this->mesh().boundaryMesh())
-        {
-            if (isA<wallPolyPatch>(pp))
-            {
-                FatalIOErrorInFunction(this->subModelProperties())
-                    << "Cloud " << this->name() << ": the wall patch "
-                    << pp.name() << " is handled by neither the collision"
-                    << " model (collisionModel none) nor the patch"
-                    << " interaction (patchInteractionModel none): select"
-                    << " collisionModel hardSphere or a"
-                    << " patchInteractionModel" << exit(FatalIOError);
-            }
-        }
-    }
 }
 
 
@@ -292,11 +270,7 @@ void Foam::HardSphereCloud<CloudType>::motion
     // stage where known (position() is expensive), else computed
     for (parcelType& p : *this)
     {
-        if (!p.hasStatus(parcelType::POSITION_KNOWN))
-        {
-            p.position0() = p.position();
-        }
-        p.status() = 0;
+        p.startStep();
     }
     collisionModel_->resetStep();
 
@@ -314,7 +288,7 @@ void Foam::HardSphereCloud<CloudType>::motion
         // Mark-then-delete
         for (parcelType& p : *this)
         {
-            if (p.hasStatus(parcelType::REMOVE))
+            if (p.removed())
             {
                 this->deleteParticle(p);
             }
@@ -325,7 +299,7 @@ void Foam::HardSphereCloud<CloudType>::motion
         bool relocate = false;
         for (const parcelType& p : *this)
         {
-            if (p.hasStatus(parcelType::RELOCATE))
+            if (p.relocating())
             {
                 relocate = true;
                 break;

@@ -40,6 +40,11 @@ License
 #include "PozorskiApteDispersion.H"
 #include "NoHardSphereCollision.H"
 #include "HardSphereCollision.H"
+#include "ParticleGridPairSearch.H"
+#include "InteractionListsPairSearch.H"
+#include "BruteForcePairSearch.H"
+#include "PhysicalCollisionResolver.H"
+#include "GhostCollisionResolver.H"
 #include "HardSphereStatistics.H"
 #include "NoParticleRotation.H"
 #include "FluidTorqueRotation.H"
@@ -70,6 +75,15 @@ makeHardSphereCollisionModelType
     basicAgglomeratingCloud
 );
 makeHardSphereCollisionModelType(HardSphereCollision, basicAgglomeratingCloud);
+
+makePairSearch(basicAgglomerateParcel);
+makePairSearchType(ParticleGridPairSearch, basicAgglomerateParcel);
+makePairSearchType(InteractionListsPairSearch, basicAgglomerateParcel);
+makePairSearchType(BruteForcePairSearch, basicAgglomerateParcel);
+
+makeCollisionResolver(basicAgglomerateParcel);
+makeCollisionResolverType(PhysicalCollisionResolver, basicAgglomerateParcel);
+makeCollisionResolverType(GhostCollisionResolver, basicAgglomerateParcel);
 
 // The particle rotation
 makeParticleRotationModel(basicAgglomeratingCloud);

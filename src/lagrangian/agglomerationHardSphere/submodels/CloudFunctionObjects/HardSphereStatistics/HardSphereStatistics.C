@@ -28,6 +28,7 @@ License
 #include "HardSphereStatistics.H"
 #include "HardSphereCloud.H"
 #include "hardSphereInput.H"
+#include "encounterMemory.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -47,7 +48,10 @@ Foam::HardSphereStatistics<CloudType>::HardSphereStatistics
         dict,
         {"type", "profiles", "direction", "nBins"}
     );
-    stats_.reset(new hardSphereStatistics(owner.mesh(), owner.name(), dict));
+    stats_.reset
+    (
+        new hardSphereStatisticsAccumulator(owner.mesh(), owner.name(), dict)
+    );
 }
 
 
@@ -87,7 +91,7 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
     }
     const hsCloudType& cloud = *cloudPtr;
     const hardSphereStep& step = cloud.collision().step();
-    hardSphereStatistics& st = stats_();
+    hardSphereStatisticsAccumulator& st = stats_();
 
     // Counters
     labelField globalCounts(step.counts);
@@ -147,8 +151,8 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
             // The position of the collision stage where known
             const label b = st.bin
             (
-                p.hasStatus(parcelType::POSITION_KNOWN)
-              ? p.position0() : p.position()
+                p.positionKnown()
+              ? p.knownPosition() : p.position()
             );
             if (b >= 0)
             {
@@ -204,7 +208,7 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
             if (b >= 0)
             {
                 colBin[b] += 1;
-                if (step.eventCategory[k] == hs::FIRST)
+                if (step.eventCategory[k] == encounterMemory::FIRST)
                 {
                     colFirstBin[b] += 1;
                 }

@@ -26,73 +26,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "HardSphereCollision.H"
-#include "HashSet.H"
-#include "cyclicPolyPatch.H"
 #include "hardSphereInput.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-template<class CloudType>
-const Foam::Enum
-<
-    typename Foam::HardSphereCollision<CloudType>::overlapTreatmentType
->
-Foam::HardSphereCollision<CloudType>::overlapTreatmentNames
-({
-    { overlapTreatmentType::OVERLAP_NONE, "none" },
-    { overlapTreatmentType::OVERLAP_SEPARATE, "separate" },
-});
-
-
-template<class CloudType>
-const Foam::Enum
-<
-    typename Foam::HardSphereCollision<CloudType>::collisionResponseType
->
-Foam::HardSphereCollision<CloudType>::collisionResponseNames
-({
-    { collisionResponseType::RESPONSE_PHYSICAL, "physical" },
-    { collisionResponseType::RESPONSE_GHOST, "ghost" },
-});
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class CloudType>
-Foam::scalar Foam::HardSphereCollision<CloudType>::readWordOrNumber
-(
-    const word& key,
-    const word& wordName,
-    const scalar wordValue,
-    const scalar defaultValue,
-    const string& meaning
-) const
-{
-    const dictionary& dict = this->coeffDict();
-
-    if (!dict.found(key))
-    {
-        return defaultValue;
-    }
-
-    ITstream& is = dict.lookup(key);
-    const token t(is);
-    if (t.isWord() && t.wordToken() == wordName)
-    {
-        return wordValue;
-    }
-    if (t.isNumber() && t.number() >= 0)
-    {
-        return t.number();
-    }
-
-    FatalIOErrorInFunction(dict)
-        << key << " " << t << " is not valid: give " << meaning.c_str()
-        << " or " << wordName << exit(FatalIOError);
-
-    return defaultValue;
-}
-
 
 template<class CloudType>
 void Foam::HardSphereCollision<CloudType>::audit
@@ -147,6 +83,121 @@ void Foam::HardSphereCollision<CloudType>::checkParticles() const
 }
 
 
+template<class CloudType>
+Foam::scalar Foam::HardSphereCollision<CloudType>::gather
+(
+    List<parcelType*>& parcels,
+    List<point>& x1
+)
+{
+    CloudType& cloud = this->owner();
+    const label n = cloud.size();
+    parcels.setSize(n);
+    x1.setSize(n);
+
+    scalar dMax = 0;
+    scalar dxMag = 0;
+    vector dxMax(Zero);
+    label i = 0;
+    for (parcelType& p : cloud)
+    {
+        if (p.nParticle() != 1)
+        {
+            FatalErrorInFunction
+                << "Cloud " << cloud.name() << ": a parcel has"
+                << " nParticle = " << p.nParticle() << "; the"
+                << " hard-sphere cloud needs one particle per parcel"
+                << " (parcelBasisType fixed, nParticle 1)"
+                << exit(FatalError);
+        }
+
+        parcels[i] = &p;
+        x1[i] = p.position();
+        dMax = max(dMax, p.d());
+        const vector dx(x1[i] - p.startPosition());
+        dxMag = max(dxMag, mag(dx));
+        dxMax = max(dxMax, cmptMag(dx));
+        ++i;
+    }
+    reduce(dMax, maxOp<scalar>());
+    reduce(dxMag, maxOp<scalar>());
+    reduce(dxMax, maxOp<vector>());
+
+    return search_->checkedDistance
+    (
+        dMax, dxMag, dxMax, memory_.reach()*dMax, cloud.name()
+    );
+}
+
+
+template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::resolveEvents
+(
+    const UList<parcelType*>& parcels,
+    const UList<point>& x1
+)
+{
+    const label n = parcels.size();
+    const scalar dt = this->owner().db().time().deltaTValue();
+    const scalar tStart = this->owner().db().time().value() - dt;
+
+    resolver_->startStep();
+
+    for (label a = 0; a < candidates_.nAccepted(); ++a)
+    {
+        const typename CollisionCandidates<parcelType>::candidate& c =
+            candidates_.accepted(a);
+
+        // Every copy of the pair (from the other processor, through another
+        // image) at the event's contact time: one geometry for both
+        const scalar s = candidates_.acceptedS(a);
+
+        parcelType& pi = *parcels[c.i];
+        parcelType* pjReal = c.j < n ? parcels[c.j] : nullptr;
+        const parcelType& pj = pjReal ? *pjReal : search_->referred(c.j - n);
+        const point& xj1 =
+            pjReal ? x1[c.j] : search_->referredPosition(c.j - n);
+
+        const labelPair idI(pi.origProc(), pi.origId());
+        const labelPair idJ(pj.origProc(), pj.origId());
+
+        if (resolver_->duplicate(pi, idI, idJ))
+        {
+            continue;
+        }
+
+        const point xic(pi.startPosition() + s*(x1[c.i] - pi.startPosition()));
+        const point xjc(pj.startPosition() + s*(xj1 - pj.startPosition()));
+
+        event_.set
+        (
+            idI,
+            hardSphereState
+            (
+                xic, pi.U(), pi.omega(), pi.d(), pi.rho(), pi.nPrimary()
+            ),
+            idJ,
+            hardSphereState
+            (
+                xjc, pj.U(), pj.omega(), pj.d(), pj.rho(), pj.nPrimary()
+            ),
+            c.iLow, c.category, s, tStart + s*dt, pi.cell()
+        );
+
+        resolver_->resolve(event_, pi, pjReal, c.iLow, x1[c.i], xj1, dt);
+
+        // Counted (and logged) once: where the lower-id partner is real
+        if (c.iLow || pjReal)
+        {
+            for (collisionObserver* o : observers_)
+            {
+                o->observe(event_);
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -157,152 +208,65 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
 )
 :
     HardSphereCollisionModel<CloudType>(dict, owner, typeName),
-    overlapTreatment_
-    (
-        overlapTreatmentNames.getOrDefault
-        (
-            "overlapTreatment", this->coeffDict(), OVERLAP_NONE
-        )
-    ),
-    encounterMemory_
-    (
-        readWordOrNumber
-        (
-            "encounterMemory", "unlimited", VGREAT, VGREAT,
-            "a time >= 0 [s]"
-        )
-    ),
-    encounterRelease_
-    (
-        readWordOrNumber
-        (
-            "encounterRelease", "none", -1, 0.1,
-            "the relative distance eps >= 0 (the last partner is"
-            " forgotten beyond (1 + eps)(r1 + r2))"
-        )
-    ),
-    collisionResponse_
-    (
-        collisionResponseNames.getOrDefault
-        (
-            "collisionResponse", this->coeffDict(), RESPONSE_PHYSICAL
-        )
-    ),
     kernel_(this->coeffDict()),
     walls_(this->coeffDict(), owner.U(), owner.keyedDispersion()),
-    gridSearch_(nullptr),
-    ilSearch_(nullptr),
-    bfSearch_(nullptr),
-    bfCheck_(nullptr),
-    noOccupancy_(),
-    schedule_(),
-    candidates_(),
-    log_(nullptr),
-    period_(GREAT, GREAT, GREAT)
-{
-    setPeriods();
-
-    // Every entry of hardSphereCoeffs is read by this model, the wall
-    // interaction or the kernel
-    wordList valid
-    ({
-        "overlapTreatment", "encounterMemory", "encounterRelease",
-        "collisionResponse", "interactionDistance", "pairSearch",
-        "pairSearchCheck", "eventLog"
-    });
-    valid.append(hardSphereWallInteraction::keys());
-    valid.append(hardSphereCollisionKernel::keys(this->coeffDict()));
-    hardSphereInput::checkKeys(this->coeffDict(), valid);
-
-    const word search
+    memory_(this->coeffDict()),
+    search_
     (
-        this->coeffDict().template getOrDefault<word>
+        PairSearch<parcelType>::New
         (
-            "pairSearch", "particleGrid"
+            this->coeffDict(), owner.mesh(), owner.U().name()
         )
-    );
-    if (search == "particleGrid")
-    {
-        gridSearch_.reset
-        (
-            new ParticleGridPairSearch<parcelType>(owner.mesh())
-        );
-    }
-    else if (search == "interactionLists")
-    {
-        ilSearch_.reset
-        (
-            new InteractionListsPairSearch<parcelType>
-            (
-                owner.mesh(),
-                owner.U().name(),
-                this->coeffDict().template getOrDefault<scalar>
-                (
-                    "interactionDistance", 0
-                )
-            )
-        );
-    }
-    else if (search == "bruteForce")
-    {
-        bfSearch_.reset(new BruteForcePairSearch<parcelType>(owner.mesh()));
-    }
-    else
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "pairSearch " << search << " is not valid; valid choices:"
-            << " (particleGrid interactionLists bruteForce)"
-            << exit(FatalIOError);
-    }
-
-    const bool check =
-        this->coeffDict().template getOrDefault<bool>
-        (
-            "pairSearchCheck", false
-        );
-    if (check)
-    {
-        if (!gridSearch_.valid())
-        {
-            FatalIOErrorInFunction(this->coeffDict())
-                << "pairSearchCheck checks pairSearch particleGrid (it is "
-                << search << ")" << exit(FatalIOError);
-        }
-        bfCheck_.reset(new BruteForcePairSearch<parcelType>(owner.mesh()));
-    }
-
-    if
+    ),
+    oracle_(nullptr),
+    resolver_
     (
-        collisionResponse_ == RESPONSE_GHOST
-     && kernel_.agglomeration().type() != "none"
-    )
+        CollisionResolver<parcelType>::New(this->coeffDict(), kernel_)
+    ),
+    candidates_(),
+    event_(),
+    log_(nullptr),
+    observers_()
+{
+    const dictionary& coeffs = this->coeffDict();
+
+    // Every entry of hardSphereCoeffs is read by one of the parts
+    wordList valid({"eventLog"});
+    valid.append(encounterMemory::keys());
+    valid.append(PairSearch<parcelType>::keys());
+    valid.append(CollisionResolver<parcelType>::keys());
+    valid.append(hardSphereWallInteraction::keys());
+    valid.append(hardSphereCollisionKernel::keys(coeffs));
+    hardSphereInput::checkKeys(coeffs, valid);
+
+    if (coeffs.getOrDefault<bool>("pairSearchCheck", false))
     {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "collisionResponse ghost counts contacts without"
-            << " applying them: set agglomerationModel none (it is "
-            << kernel_.agglomeration().type() << ")"
-            << exit(FatalIOError);
+        if (search_->type() != "particleGrid")
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "pairSearchCheck checks pairSearch particleGrid (it is "
+                << search_->type() << ")" << exit(FatalIOError);
+        }
+        oracle_ = PairSearch<parcelType>::New
+        (
+            "bruteForce", coeffs, owner.mesh(), owner.U().name()
+        );
     }
 
-    if (this->coeffDict().template getOrDefault<bool>("eventLog", false))
+    observers_.append(&this->step_);
+    if (coeffs.getOrDefault<bool>("eventLog", false))
     {
         log_.reset(new collisionEventLog(owner.mesh(), owner.name()));
+        observers_.append(log_.get());
     }
 
-    Info<< "    overlapTreatment "
-        << overlapTreatmentNames[overlapTreatment_] << ", ";
+    Info<< "    pairSearch " << search_->type() << ", ";
+    resolver_->write(Info);
+    Info<< ", ";
+    memory_.write(Info);
+    Info<< nl << "    ";
     walls_.info(Info);
-    Info<< nl << "    collisionResponse "
-        << collisionResponseNames[collisionResponse_]
-        << ", encounterRelease ";
-    if (encounterRelease_ < 0)
-    {
-        Info<< "none" << endl;
-    }
-    else
-    {
-        Info<< encounterRelease_ << endl;
-    }
+    Info<< endl;
 }
 
 
@@ -316,174 +280,37 @@ void Foam::HardSphereCollision<CloudType>::collide()
 
     audit(step.mass0, step.nPrimaries0);
 
+    List<parcelType*> parcels;
+    List<point> x1;
+    const scalar distance = gather(parcels, x1);
+
     const scalar dt = cloud.db().time().deltaTValue();
     const scalar tStart = cloud.db().time().value() - dt;
-
-    // End-of-step positions and the search distance
-    const label n = cloud.size();
-    List<parcelType*> parcels(n);
-    List<point> x1(n);
-
-    scalar dMax = 0;
-    scalar dxMag = 0;
-    vector dxMax(Zero);
+    if (oracle_.valid())
     {
-        label i = 0;
-        for (parcelType& p : cloud)
-        {
-            if (p.nParticle() != 1)
-            {
-                FatalErrorInFunction
-                    << "Cloud " << cloud.name() << ": a parcel has"
-                    << " nParticle = " << p.nParticle() << "; the"
-                    << " hard-sphere cloud needs one particle per parcel"
-                    << " (parcelBasisType fixed, nParticle 1)"
-                    << exit(FatalError);
-            }
-
-            parcels[i] = &p;
-            x1[i] = p.position();
-            dMax = max(dMax, p.d());
-            const vector dx(x1[i] - p.position0());
-            dxMag = max(dxMag, mag(dx));
-            dxMax = max(dxMax, cmptMag(dx));
-            ++i;
-        }
-    }
-    reduce(dMax, maxOp<scalar>());
-    reduce(dxMag, maxOp<scalar>());
-    reduce(dxMax, maxOp<vector>());
-
-    const bool release = encounterRelease_ >= 0;
-    const scalar distance = checkedDistance
-    (
-        dMax, dxMag, dxMax, (release ? 1 + encounterRelease_ : 1)*dMax
-    );
-
-
-    // Candidate events
-    // ~~~~~~~~~~~~~~~~
-
-    schedule_.clear();
-    candidates_.clear();
-    pairContact pc;
-
-    // Real parcels whose last partner is still within the release distance
-    boolList partnerNear(n, false);
-
-    auto evaluate = [&](const label i, const label j)
-    {
-        const parcelType& pi = *parcels[i];
-        const bool jReal = j < n;
-        const parcelType& pj = jReal ? *parcels[j] : referred(j - n);
-        const point& xj1 = jReal ? x1[j] : referredPosition(j - n);
-
-        const vector dxi(x1[i] - pi.position0());
-        const vector dxj(xj1 - pj.position0());
-        const scalar R = 0.5*(pi.d() + pj.d());
-
-        if
+        search_->check
         (
-            release
-         && (pi.lastPartner()[1] >= 0 || (jReal && pj.lastPartner()[1] >= 0))
-         && magSqr(xj1 - x1[i]) <= sqr((1 + encounterRelease_)*R)
-        )
-        {
-            if (pi.lastPartner() == labelPair(pj.origProc(), pj.origId()))
-            {
-                partnerNear[i] = true;
-            }
-            if
-            (
-                jReal
-             && pj.lastPartner() == labelPair(pi.origProc(), pi.origId())
-            )
-            {
-                partnerNear[j] = true;
-            }
-        }
-
-        if (!pc.find(pi.position0(), dxi, pj.position0(), dxj, R))
-        {
-            return;
-        }
-
-        const collisionSchedule::globalId idI({pi.origProc(), pi.origId()});
-        const collisionSchedule::globalId idJ({pj.origProc(), pj.origId()});
-
-        candidate c;
-        c.i = i;
-        c.j = j;
-        c.iLow = collisionSchedule::lessId(idI, idJ);
-
-        const vector xij
-        (
-            (pj.position0() + pc.s*dxj) - (pi.position0() + pc.s*dxi)
+            oracle_(), parcels, x1, distance, memory_.reach(), cloud.name()
         );
-        const scalar mxij = mag(xij);
-        const bool separating =
-            mxij < VSMALL || ((pj.U() - pi.U()) & (xij/mxij)) >= 0;
-
-        const scalar tc = tStart + pc.s*dt;
-        if (pc.overlapStart)
-        {
-            c.category = hardSphereStep::OVERLAP_START;
-        }
-        else if
-        (
-            (
-                pi.lastPartner() == labelPair(idJ[0], idJ[1])
-             && tc - pi.lastContactTime() <= encounterMemory_
-            )
-         || (
-                pj.lastPartner() == labelPair(idI[0], idI[1])
-             && tc - pj.lastContactTime() <= encounterMemory_
-            )
-        )
-        {
-            c.category = hardSphereStep::REPEAT;
-        }
-        else
-        {
-            c.category = hardSphereStep::FIRST;
-        }
-
-        schedule_.append(pc.s, idI, idJ, separating);
-        candidates_.append(c);
-    };
-
-    // Boxes inflated to cover contacts and the release distance
-    const scalar inflate = release ? 1 + encounterRelease_ : 1;
-    search(parcels, x1, distance, inflate, evaluate);
-
-    // Forget the last partners that moved beyond the release distance
-    // (the categories of this step's events are already set)
-    if (release)
-    {
-        forAll(parcels, i)
-        {
-            if (!partnerNear[i] && parcels[i]->lastPartnerId() >= 0)
-            {
-                parcels[i]->lastPartnerProc() = -1;
-                parcels[i]->lastPartnerId() = -1;
-            }
-        }
     }
+    candidates_.find(parcels, x1, search_(), distance, memory_, tStart, dt);
 
-    // Global order, one event per particle (every event when ghost)
-    schedule_.select(collisionResponse_ != RESPONSE_GHOST);
+    candidates_.select(resolver_->onePerParticle());
     if (Pstream::master())
     {
-        step.counts[hardSphereStep::SUPPRESSED] += schedule_.nSuppressed();
+        step.counts[hardSphereStep::SUPPRESSED] += candidates_.nSuppressed();
         step.counts[hardSphereStep::SKIP_SEPARATING] +=
-            schedule_.nSeparating();
+            candidates_.nSeparating();
     }
 
-    applyEvents(parcels, x1);
+    resolveEvents(parcels, x1);
 
+    // Wall contacts at one radius (the agglomerates formed in the step
+    // are left to afterRelocation)
     if (walls_.atRadius())
     {
-        wallContacts(parcels, x1);
+        step.counts[hardSphereStep::WALL] +=
+            walls_.contactsAtRadius(parcels, x1, search_(), dt);
     }
 
     // The end positions are the next step's start positions, except for
@@ -493,12 +320,11 @@ void Foam::HardSphereCollision<CloudType>::collide()
         parcelType& p = *parcels[i];
         if
         (
-            !p.hasStatus(parcelType::RELOCATE)
-         && !p.hasStatus(parcelType::REMOVE)
+            !p.relocating()
+         && !p.removed()
         )
         {
-            p.position0() = x1[i];
-            p.setStatus(parcelType::POSITION_KNOWN);
+            p.setKnownPosition(x1[i]);
         }
     }
 
@@ -510,9 +336,44 @@ void Foam::HardSphereCollision<CloudType>::collide()
 }
 
 
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+template<class CloudType>
+bool Foam::HardSphereCollision<CloudType>::hitWall
+(
+    parcelType& p,
+    const polyPatch& pp
+)
+{
+    if (!walls_.handles(pp.index()))
+    {
+        return false;
+    }
 
-#include "HardSphereCollisionSearch.C"
-#include "HardSphereCollisionApply.C"
+    if (walls_.hitCentre(p))
+    {
+        ++this->step_.counts[hardSphereStep::WALL_CENTRE];
+    }
+
+    return true;
+}
+
+
+template<class CloudType>
+bool Foam::HardSphereCollision<CloudType>::afterRelocation()
+{
+    bool relocate = false;
+
+    if (walls_.atRadius())
+    {
+        this->step_.counts[hardSphereStep::WALL] +=
+            walls_.contactsOfFormed
+            (
+                this->owner(), search_(),
+                this->owner().db().time().deltaTValue(), relocate
+            );
+    }
+
+    return returnReduce(relocate, orOp<bool>());
+}
+
 
 // ************************************************************************* //

@@ -26,18 +26,39 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "NoHardSphereCollision.H"
+#include "wallPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
 Foam::NoHardSphereCollision<CloudType>::NoHardSphereCollision
 (
-    const dictionary&,
+    const dictionary& dict,
     CloudType& owner
 )
 :
     HardSphereCollisionModel<CloudType>(owner)
-{}
+{
+    // A particle reaching a wall that nothing handles would be tracked
+    // into it forever
+    if (owner.patchInteraction().type() != "none")
+    {
+        return;
+    }
+    for (const polyPatch& pp : owner.mesh().boundaryMesh())
+    {
+        if (isA<wallPolyPatch>(pp))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Cloud " << owner.name() << ": the wall patch "
+                << pp.name() << " is handled by neither the collision"
+                << " model (collisionModel none) nor the patch"
+                << " interaction (patchInteractionModel none): select"
+                << " collisionModel hardSphere or a"
+                << " patchInteractionModel" << exit(FatalIOError);
+        }
+    }
+}
 
 
 // ************************************************************************* //

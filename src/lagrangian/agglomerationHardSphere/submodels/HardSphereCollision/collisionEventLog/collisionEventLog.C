@@ -198,31 +198,21 @@ Foam::fileName Foam::collisionEventLog::folder
 }
 
 
-void Foam::collisionEventLog::record
-(
-    const hardSphereState& s1,
-    const hardSphereState& s2,
-    const labelPair& id1,
-    const labelPair& id2,
-    const label category,
-    const scalar s,
-    const label celli,
-    const collisionOutcome* outcome
-)
+void Foam::collisionEventLog::observe(const collisionEventRecord& event)
 {
     const Time& runTime = mesh_.time();
     collisionEvent e;
     e.timeIndex = runTime.timeIndex();
-    e.category = category;
-    e.setOutcome(outcome);
-    e.time = runTime.value() - (1 - s)*runTime.deltaTValue();
-    e.proc[0] = id1.first();
-    e.id[0] = id1.second();
-    e.proc[1] = id2.first();
-    e.id[1] = id2.second();
-    e.p1 = s1;
-    e.p2 = s2;
-    e.wallDistance = y_[celli];
+    e.category = event.category;
+    e.setOutcome(event.outcomePtr());
+    e.time = runTime.value() - (1 - event.s)*runTime.deltaTValue();
+    e.proc[0] = event.id1.first();
+    e.id[0] = event.id1.second();
+    e.proc[1] = event.id2.first();
+    e.id[1] = event.id2.second();
+    e.p1 = event.s1;
+    e.p2 = event.s2;
+    e.wallDistance = y_[event.celli];
     buffer_.append(e);
 }
 

@@ -83,13 +83,12 @@ void Foam::hardSphereStep::reset()
 }
 
 
-void Foam::hardSphereStep::count
-(
-    const label category,
-    const point& xc,
-    const collisionOutcome* outcome
-)
+void Foam::hardSphereStep::observe(const collisionEventRecord& event)
 {
+    const label category = event.category;
+    const point xc(event.contactPoint());
+    const collisionOutcome* outcome = event.outcomePtr();
+
     ++counts[COL];
     ++counts[COL_FIRST + category];
 

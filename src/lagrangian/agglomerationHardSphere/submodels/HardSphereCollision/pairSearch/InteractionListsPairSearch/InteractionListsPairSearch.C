@@ -48,7 +48,10 @@ void Foam::InteractionListsPairSearch<ParcelType>::checkLists
 
     il_.reset
     (
-        new InteractionLists<ParcelType>(mesh_, distance_, false, UName_)
+        new InteractionLists<ParcelType>
+        (
+            this->mesh_, distance_, false, UName_
+        )
     );
 }
 
@@ -58,42 +61,48 @@ void Foam::InteractionListsPairSearch<ParcelType>::checkLists
 template<class ParcelType>
 Foam::InteractionListsPairSearch<ParcelType>::InteractionListsPairSearch
 (
+    const dictionary& dict,
     const polyMesh& mesh,
-    const word& UName,
-    const scalar minDistance
+    const word& UName
 )
 :
-    mesh_(mesh),
+    PairSearch<ParcelType>(mesh),
     UName_(UName),
-    minDistance_(minDistance),
+    minDistance_(dict.getOrDefault<scalar>("interactionDistance", 0)),
     il_(nullptr),
     distance_(0),
     referred_(),
     referredX1_(),
     cellStart_(),
-    cellParcels_()
-{}
+    cellParcels_(),
+    occupancy_()
+{
+    if (minDistance_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "interactionDistance " << minDistance_ << " is not valid:"
+            << " give a distance >= 0 [m]" << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class ParcelType>
-template<class Visitor>
 void Foam::InteractionListsPairSearch<ParcelType>::search
 (
     const UList<ParcelType*>& parcels,
     const UList<point>& x1,
-    const List<DynamicList<ParcelType*>>& cellOccupancy,
     const scalar distance,
     const scalar,
-    Visitor& visit
+    const typename PairSearch<ParcelType>::visitor& visit
 )
 {
     checkLists(distance);
     InteractionLists<ParcelType>& il = il_();
 
     const label n = parcels.size();
-    const label nCells = mesh_.nCells();
+    const label nCells = this->mesh_.nCells();
 
     // Parcels per cell (counting sort)
     cellStart_.setSize(nCells + 1);
@@ -118,7 +127,17 @@ void Foam::InteractionListsPairSearch<ParcelType>::search
     // Referred parcels: send now, receive after the real-real search
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
     const label startOfRequests = Pstream::nRequests();
-    il.sendReferredData(cellOccupancy, pBufs);
+    occupancy_.setSize(nCells);
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        DynamicList<ParcelType*>& cellList = occupancy_[celli];
+        cellList.clear();
+        for (label a = cellStart_[celli]; a < cellStart_[celli + 1]; ++a)
+        {
+            cellList.append(parcels[cellParcels_[a]]);
+        }
+    }
+    il.sendReferredData(occupancy_, pBufs);
 
     // Real-real: same cell and the direct interaction list
     const labelListList& dil = il.dil();

@@ -167,7 +167,10 @@ void Foam::ParticleGridPairSearch<ParcelType>::refer
         received_.set
         (
             k,
-            new IDLList<ParcelType>(is, typename ParcelType::iNew(mesh_))
+            new IDLList<ParcelType>
+            (
+                is, typename ParcelType::iNew(this->mesh_)
+            )
         );
         label q = 0;
         for (const ParcelType& p : received_[k])
@@ -184,10 +187,12 @@ void Foam::ParticleGridPairSearch<ParcelType>::refer
 template<class ParcelType>
 Foam::ParticleGridPairSearch<ParcelType>::ParticleGridPairSearch
 (
-    const polyMesh& mesh
+    const dictionary& dict,
+    const polyMesh& mesh,
+    const word&
 )
 :
-    mesh_(mesh),
+    PairSearch<ParcelType>(mesh),
     lattice_(mesh, "pairSearch particleGrid"),
     shifts_(lattice_.shifts(0.5*lattice_.minPeriod())),
     procBb_(Pstream::nProcs()),
@@ -231,15 +236,13 @@ Foam::ParticleGridPairSearch<ParcelType>::ParticleGridPairSearch
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class ParcelType>
-template<class Visitor>
 void Foam::ParticleGridPairSearch<ParcelType>::search
 (
     const UList<ParcelType*>& parcels,
     const UList<point>& x1,
-    const List<DynamicList<ParcelType*>>&,
     const scalar,
     const scalar inflate,
-    Visitor& visit
+    const typename PairSearch<ParcelType>::visitor& visit
 )
 {
     const label n = parcels.size();
@@ -252,7 +255,7 @@ void Foam::ParticleGridPairSearch<ParcelType>::search
         const ParcelType& p = *parcels[i];
         boxes[i] = sweptBoxGrid::sweptBox
         (
-            p.position0(), x1[i], 0.5*inflate*p.d()
+            p.startPosition(), x1[i], 0.5*inflate*p.d()
         );
         spanMax = max(spanMax, boxes[i].span());
     }
@@ -269,7 +272,7 @@ void Foam::ParticleGridPairSearch<ParcelType>::search
         const ParcelType& p = *referred_[k];
         boxes[n + k] = sweptBoxGrid::sweptBox
         (
-            p.position0(), referredX1_[k], 0.5*inflate*p.d()
+            p.startPosition(), referredX1_[k], 0.5*inflate*p.d()
         );
     }
 
@@ -296,9 +299,9 @@ const Foam::labelList& Foam::ParticleGridPairSearch<ParcelType>::wallFaces
         // (Re)build the cache for a larger reach
         wallDistance_ = 1.5*r;
         cellWallFaces_.clear();
-        cellWallFaces_.setSize(mesh_.nCells());
+        cellWallFaces_.setSize(this->mesh_.nCells());
         cellWallDone_.clear();
-        cellWallDone_.resize(mesh_.nCells());
+        cellWallDone_.resize(this->mesh_.nCells());
     }
 
     if (!cellWallDone_.test(celli))
@@ -306,7 +309,10 @@ const Foam::labelList& Foam::ParticleGridPairSearch<ParcelType>::wallFaces
         const vector w(wallDistance_, wallDistance_, wallDistance_);
         const boundBox cellBb
         (
-            mesh_.cells()[celli].points(mesh_.faces(), mesh_.points()),
+            this->mesh_.cells()[celli].points
+            (
+                this->mesh_.faces(), this->mesh_.points()
+            ),
             false
         );
         const labelList elems

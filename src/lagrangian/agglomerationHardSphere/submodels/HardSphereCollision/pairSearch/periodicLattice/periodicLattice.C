@@ -30,7 +30,12 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::periodicLattice::periodicLattice(const polyMesh& mesh, const word& who)
+Foam::periodicLattice::periodicLattice
+(
+    const polyMesh& mesh,
+    const word& who,
+    const rotationalType rotational
+)
 :
     vectors_()
 {
@@ -56,7 +61,11 @@ Foam::periodicLattice::periodicLattice(const polyMesh& mesh, const word& who)
         {
             continue;
         }
-        if (!cycPtr->parallel() && !cycPtr->separated())
+        if
+        (
+            !cycPtr->parallel() && !cycPtr->separated()
+         && rotational == ROTATIONAL_REJECT
+        )
         {
             FatalErrorInFunction
                 << who << ": the cyclic patch " << pp.name()
@@ -99,6 +108,34 @@ Foam::scalar Foam::periodicLattice::minPeriod() const
         p = min(p, mag(e));
     }
     return p;
+}
+
+
+Foam::vector Foam::periodicLattice::axisPeriods() const
+{
+    vector period(GREAT, GREAT, GREAT);
+    for (const vector& s : vectors_)
+    {
+        const scalar L = mag(s);
+        label nAxes = 0;
+        direction axis = 0;
+        for (direction c = 0; c < vector::nComponents; ++c)
+        {
+            if (mag(s[c]) > 1e-6*L)
+            {
+                ++nAxes;
+                axis = c;
+            }
+        }
+        for (direction c = 0; c < vector::nComponents; ++c)
+        {
+            if (nAxes > 1 || c == axis)
+            {
+                period[c] = min(period[c], L);
+            }
+        }
+    }
+    return period;
 }
 
 

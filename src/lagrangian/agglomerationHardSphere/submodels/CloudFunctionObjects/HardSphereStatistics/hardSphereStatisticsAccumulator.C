@@ -25,7 +25,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "hardSphereStatistics.H"
+#include "hardSphereStatisticsAccumulator.H"
 #include "cloud.H"
 #include "volFields.H"
 #include "OSspecific.H"
@@ -33,7 +33,7 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::fileName Foam::hardSphereStatistics::baseDir() const
+Foam::fileName Foam::hardSphereStatisticsAccumulator::baseDir() const
 {
     return
         mesh_.time().globalPath()/"postProcessing"
@@ -41,7 +41,7 @@ Foam::fileName Foam::hardSphereStatistics::baseDir() const
 }
 
 
-void Foam::hardSphereStatistics::readState()
+void Foam::hardSphereStatisticsAccumulator::readState()
 {
     if (!state_.found("counters"))
     {
@@ -87,7 +87,7 @@ void Foam::hardSphereStatistics::readState()
 }
 
 
-void Foam::hardSphereStatistics::updateState()
+void Foam::hardSphereStatisticsAccumulator::updateState()
 {
     dictionary cd;
     forAll(counters_, i)
@@ -118,7 +118,7 @@ void Foam::hardSphereStatistics::updateState()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::hardSphereStatistics::hardSphereStatistics
+Foam::hardSphereStatisticsAccumulator::hardSphereStatisticsAccumulator
 (
     const fvMesh& mesh,
     const word& cloudName,
@@ -249,7 +249,7 @@ Foam::hardSphereStatistics::hardSphereStatistics
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::hardSphereStatistics::bin(const point& x) const
+Foam::label Foam::hardSphereStatisticsAccumulator::bin(const point& x) const
 {
     if (!profiles_)
     {
@@ -267,7 +267,7 @@ Foam::label Foam::hardSphereStatistics::bin(const point& x) const
 }
 
 
-void Foam::hardSphereStatistics::addCounts
+void Foam::hardSphereStatisticsAccumulator::addCounts
 (
     const List<label>& increments,
     const scalar sumDeltaL,
@@ -283,7 +283,7 @@ void Foam::hardSphereStatistics::addCounts
 }
 
 
-void Foam::hardSphereStatistics::addEventProfiles
+void Foam::hardSphereStatisticsAccumulator::addEventProfiles
 (
     const scalarField& col,
     const scalarField& colFirst,
@@ -296,7 +296,7 @@ void Foam::hardSphereStatistics::addEventProfiles
 }
 
 
-void Foam::hardSphereStatistics::addParticleProfiles
+void Foam::hardSphereStatisticsAccumulator::addParticleProfiles
 (
     const scalarField& n,
     const scalarField& volume,
@@ -335,7 +335,7 @@ void Foam::hardSphereStatistics::addParticleProfiles
 }
 
 
-void Foam::hardSphereStatistics::writeStep
+void Foam::hardSphereStatisticsAccumulator::writeStep
 (
     const scalar time,
     const label nParticles,
@@ -372,7 +372,10 @@ void Foam::hardSphereStatistics::writeStep
 }
 
 
-void Foam::hardSphereStatistics::writeTime(const Map<label>& sizeHistogram)
+void Foam::hardSphereStatisticsAccumulator::writeTime
+(
+    const Map<label>& sizeHistogram
+)
 {
     updateState();
 

@@ -34,10 +34,12 @@ License
 template<class ParcelType>
 Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
 (
-    const polyMesh& mesh
+    const dictionary& dict,
+    const polyMesh& mesh,
+    const word&
 )
 :
-    mesh_(mesh),
+    PairSearch<ParcelType>(mesh),
     lattice_(mesh, "pairSearch bruteForce"),
     wallFaces_(hardSphereWallInteraction::wallFaces(mesh)),
     received_(),
@@ -49,15 +51,13 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class ParcelType>
-template<class Visitor>
 void Foam::BruteForcePairSearch<ParcelType>::search
 (
     const UList<ParcelType*>& parcels,
     const UList<point>& x1,
-    const List<DynamicList<ParcelType*>>&,
     const scalar,
     const scalar inflate,
-    Visitor& visit
+    const typename PairSearch<ParcelType>::visitor& visit
 )
 {
     const label n = parcels.size();
@@ -108,7 +108,7 @@ void Foam::BruteForcePairSearch<ParcelType>::search
         received_.set
         (
             proci,
-            new IDLList<ParcelType>(is, typename ParcelType::iNew(mesh_))
+            new IDLList<ParcelType>(is, typename ParcelType::iNew(this->mesh_))
         );
         label k = 0;
         for (const ParcelType& p : received_[proci])
@@ -128,7 +128,7 @@ void Foam::BruteForcePairSearch<ParcelType>::search
         const ParcelType& pk = *partner[k];
         box[k] = sweptBoxGrid::sweptBox
         (
-            pk.position0(), partnerX1[k], 0.5*inflate*pk.d()
+            pk.startPosition(), partnerX1[k], 0.5*inflate*pk.d()
         );
         diagMax = max(diagMax, mag(box[k].span()));
     }
@@ -182,7 +182,7 @@ void Foam::BruteForcePairSearch<ParcelType>::search
                 (
                     sweptBoxGrid::sweptBox
                     (
-                        copy->position0(), xk, 0.5*inflate*copy->d()
+                        copy->startPosition(), xk, 0.5*inflate*copy->d()
                     )
                 );
                 if (!sweptBoxGrid::overlap(box[i], bk))

@@ -1,0 +1,136 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "hardSphereWallInteraction.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+bool Foam::hardSphereWallInteraction::contactAtRadius
+(
+    ParcelType& p,
+    const point& x,
+    const labelUList& wallFaces,
+    const scalar dt
+) const
+{
+    particle wp
+    {
+        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
+    };
+    bool moved = false;
+    point xNew;
+
+    const resultType result =
+        contactAtRadius(x, wallFaces, dt, wp, moved, xNew);
+
+    if (moved)
+    {
+        p.relocateTo(xNew);
+    }
+    return result == IMPACT;
+}
+
+
+template<class ParcelType>
+bool Foam::hardSphereWallInteraction::hitCentre(ParcelType& p) const
+{
+    particle wp
+    {
+        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
+    };
+    return hitCentre(p.face(), wp, p.stepFraction());
+}
+
+
+template<class ParcelType>
+Foam::label Foam::hardSphereWallInteraction::contactsAtRadius
+(
+    const UList<ParcelType*>& parcels,
+    UList<point>& x1,
+    const PairSearch<ParcelType>& search,
+    const scalar dt
+) const
+{
+    label nImpacts = 0;
+    forAll(parcels, i)
+    {
+        ParcelType& p = *parcels[i];
+
+        if (p.removed() || p.formed())
+        {
+            continue;
+        }
+
+        // Relocated by an event: from the relocation target
+        if (p.relocating())
+        {
+            x1[i] = p.relocationTarget();
+        }
+
+        nImpacts +=
+            contactAtRadius
+            (
+                p, x1[i], search.wallFaces(p.cell(), 0.5*p.d()), dt
+            );
+    }
+    return nImpacts;
+}
+
+
+template<class CloudType>
+Foam::label Foam::hardSphereWallInteraction::contactsOfFormed
+(
+    CloudType& cloud,
+    const PairSearch<typename CloudType::parcelType>& search,
+    const scalar dt,
+    bool& relocate
+) const
+{
+    typedef typename CloudType::parcelType parcelType;
+
+    label nImpacts = 0;
+    relocate = false;
+    for (parcelType& p : cloud)
+    {
+        if (p.formed())
+        {
+            // At the relocation target: position0 (exact)
+            nImpacts +=
+                contactAtRadius
+                (
+                    p, p.relocationTarget(),
+                    search.wallFaces(p.cell(), 0.5*p.d()), dt
+                );
+            relocate = relocate || p.relocating();
+        }
+    }
+    return nImpacts;
+}
+
+
+// ************************************************************************* //

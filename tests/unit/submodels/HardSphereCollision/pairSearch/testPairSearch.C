@@ -1,0 +1,330 @@
+/*---------------------------------------------------------------------------*\
+    Unit tests of the pair searches (PairSearch) on meshes built in the
+    test (blockMesh from a dictionary string; no case on disk): on a box
+    periodic in x and z with walls in y, and on a box without cyclics,
+    particleGrid and the bruteForce oracle give exactly the candidate
+    pairs found here independently, by a hand-written O(N^2) loop over
+    every periodic image: the pairs whose swept boxes (inflated by
+    1.1 d/2) overlap; run-time selection names the searches and rejects a
+    misspelt one and interactionDistance with another search.
+\*---------------------------------------------------------------------------*/
+
+#include "ParticleGridPairSearch.H"
+#include "BruteForcePairSearch.H"
+#include "basicAgglomerateParcel.H"
+#include "blockMesh.H"
+#include "Time.H"
+#include "IStringStream.H"
+#include "HashTable.H"
+#include <gtest/gtest.h>
+#include <random>
+#include <set>
+#include <tuple>
+
+using namespace Foam;
+
+namespace
+{
+
+typedef PairSearch<basicAgglomerateParcel> searchType;
+
+//- (lower index, higher index, the higher one's end position rounded to
+//  1e-12 m: an image's is shifted); a pair with an image is keyed from
+//  the real particle: (real index, image's particle index, position)
+typedef std::tuple<label, label, long, long, long> pairKey;
+
+pairKey key(const label i, const label j, const point& xj)
+{
+    return pairKey
+    (
+        i, j, std::lround(xj.x()*1e12), std::lround(xj.y()*1e12),
+        std::lround(xj.z()*1e12)
+    );
+}
+
+//- A 1 mm box of n^3 cells; cyclic in x and z or all walls
+autoPtr<polyMesh> boxMesh(const Time& runTime, const bool periodic)
+{
+    const std::string cyc(periodic ? "cyclic" : "wall");
+    const std::string text
+    (
+        "scale 1e-3;"
+        " vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0)"
+        " (0 0 1) (1 0 1) (1 1 1) (0 1 1));"
+        " blocks (hex (0 1 2 3 4 5 6 7) (5 5 5) simpleGrading (1 1 1));"
+        " boundary ("
+        " xMin { type " + cyc + "; neighbourPatch xMax; faces ((0 4 7 3)); }"
+        " xMax { type " + cyc + "; neighbourPatch xMin; faces ((1 2 6 5)); }"
+        " yMin { type wall; faces ((0 1 5 4)); }"
+        " yMax { type wall; faces ((3 7 6 2)); }"
+        " zMin { type " + cyc + "; neighbourPatch zMax; faces ((0 3 2 1)); }"
+        " zMax { type " + cyc + "; neighbourPatch zMin; faces ((4 5 6 7)); }"
+        " );"
+    );
+    IStringStream is(text);
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "blockMeshDict", runTime.system(), runTime,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        dictionary(is)
+    );
+    blockMesh blocks(dict, polyMesh::defaultRegion);
+    blocks.verbose(false);
+    return autoPtr<polyMesh>
+    (
+        new polyMesh
+        (
+            IOobject
+            (
+                polyMesh::defaultRegion, runTime.constant(), runTime,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            ),
+            pointField(blocks.points()),
+            blocks.cells(),
+            blocks.patches(),
+            blocks.patchNames(),
+            blocks.patchDicts(),
+            "defaultFaces",
+            "empty"
+        )
+    );
+}
+
+
+//- A random cloud: n particles of 20-60 um, start positions in the box
+//  (away from the walls by a radius), displacements up to 'move' per
+//  component; the parcels own themselves (deleted by the caller)
+void randomCloud
+(
+    const polyMesh& mesh,
+    const label n,
+    const scalar move,
+    const unsigned seed,
+    List<basicAgglomerateParcel*>& parcels,
+    List<point>& x1
+)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    parcels.setSize(n);
+    x1.setSize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar d = 20e-6 + 40e-6*u(gen);
+        const point x0
+        (
+            1e-3*u(gen), 0.5*d + (1e-3 - d)*u(gen), 1e-3*u(gen)
+        );
+        basicAgglomerateParcel* p =
+            new basicAgglomerateParcel(mesh, x0, mesh.findCell(x0));
+        p->d() = d;
+        parcels[i] = p;
+        x1[i] =
+            x0 + move*vector(2*u(gen) - 1, 2*u(gen) - 1, 2*u(gen) - 1);
+    }
+}
+
+
+std::set<pairKey> candidates
+(
+    searchType& search,
+    const UList<basicAgglomerateParcel*>& parcels,
+    const UList<point>& x1,
+    const scalar distance
+)
+{
+    std::set<pairKey> keys;
+    const label n = parcels.size();
+    Map<label> index;
+    forAll(parcels, k)
+    {
+        index.insert(parcels[k]->origId(), k);
+    }
+    auto collect = [&](const label i, const label j)
+    {
+        if (j < n)
+        {
+            keys.insert(key(min(i, j), max(i, j), x1[max(i, j)]));
+        }
+        else
+        {
+            const basicAgglomerateParcel& pj = search.referred(j - n);
+            keys.insert
+            (
+                key(i, index[pj.origId()], search.referredPosition(j - n))
+            );
+        }
+    };
+    search.search(parcels, x1, distance, 1.1, collect);
+    return keys;
+}
+
+
+//- The oracle written out here: every pair of a real particle i with a
+//  real particle j > i or an image of any particle (shift by the periods
+//  -1, 0, 1 along x and z) whose swept boxes, inflated by 1.1 d/2,
+//  overlap
+std::set<pairKey> handOracle
+(
+    const UList<basicAgglomerateParcel*>& parcels,
+    const UList<point>& x1,
+    const bool periodic
+)
+{
+    std::set<pairKey> keys;
+    const label n = parcels.size();
+    auto box = [&](const label i, const vector& s)
+    {
+        const point& a = parcels[i]->startPosition();
+        const scalar h = 0.55*parcels[i]->d();
+        const vector hv(h, h, h);
+        return boundBox(min(a, x1[i]) - hv + s, max(a, x1[i]) + hv + s);
+    };
+    const label m = periodic ? 1 : 0;
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            for (label a = -m; a <= m; ++a)
+            {
+                for (label c = -m; c <= m; ++c)
+                {
+                    const vector s(1e-3*a, 0, 1e-3*c);
+                    const bool image = (a != 0 || c != 0);
+                    if (!image && j <= i)
+                    {
+                        continue;
+                    }
+                    if (box(i, Zero).overlaps(box(j, s)))
+                    {
+                        keys.insert(key(i, j, x1[j] + s));
+                    }
+                }
+            }
+        }
+    }
+    return keys;
+}
+
+
+struct meshFixture
+{
+    autoPtr<Time> runTime;
+    autoPtr<polyMesh> mesh;
+    List<basicAgglomerateParcel*> parcels;
+    List<point> x1;
+
+    meshFixture(const bool periodic, const label n, const scalar move)
+    :
+        runTime(Time::New()),
+        mesh(boxMesh(runTime(), periodic))
+    {
+        randomCloud(mesh(), n, move, 7u + n, parcels, x1);
+    }
+
+    ~meshFixture()
+    {
+        for (basicAgglomerateParcel* p : parcels)
+        {
+            delete p;
+        }
+    }
+};
+
+const dictionary noEntries;
+
+} // End anonymous namespace
+
+
+TEST(pairSearch, particleGridEqualsOracleWithImages)
+{
+    meshFixture f(true, 400, 40e-6);
+    BruteForcePairSearch<basicAgglomerateParcel> oracle
+    (
+        noEntries, f.mesh(), "U"
+    );
+    ParticleGridPairSearch<basicAgglomerateParcel> grid
+    (
+        noEntries, f.mesh(), "U"
+    );
+
+    const std::set<pairKey> expected(handOracle(f.parcels, f.x1, true));
+    const std::set<pairKey> bf(candidates(oracle, f.parcels, f.x1, 0));
+    const std::set<pairKey> pg(candidates(grid, f.parcels, f.x1, 0));
+
+    // Dense enough to have pairs, across the cyclics too
+    ASSERT_GT(expected.size(), 100u);
+    EXPECT_GT(grid.nReferred(), 0);
+    EXPECT_EQ(bf, expected);
+    EXPECT_EQ(pg, expected);
+}
+
+
+TEST(pairSearch, particleGridEqualsOracleWithoutCyclics)
+{
+    meshFixture f(false, 300, 80e-6);
+    BruteForcePairSearch<basicAgglomerateParcel> oracle
+    (
+        noEntries, f.mesh(), "U"
+    );
+    ParticleGridPairSearch<basicAgglomerateParcel> grid
+    (
+        noEntries, f.mesh(), "U"
+    );
+    const std::set<pairKey> expected(handOracle(f.parcels, f.x1, false));
+    ASSERT_GT(expected.size(), 50u);
+    EXPECT_EQ(candidates(oracle, f.parcels, f.x1, 0), expected);
+    EXPECT_EQ(candidates(grid, f.parcels, f.x1, 0), expected);
+    EXPECT_EQ(grid.nReferred(), 0);
+}
+
+
+namespace
+{
+
+std::string selectionError(const std::string& text)
+{
+    try
+    {
+        autoPtr<Time> runTime(Time::New());
+        autoPtr<polyMesh> mesh(boxMesh(runTime(), true));
+        IStringStream is(text);
+        searchType::New(dictionary(is), mesh(), "U");
+    }
+    catch (const Foam::error& err)
+    {
+        return std::string(err.message());
+    }
+    return "";
+}
+
+} // End anonymous namespace
+
+
+TEST(pairSearch, selection)
+{
+    autoPtr<Time> runTime(Time::New());
+    autoPtr<polyMesh> mesh(boxMesh(runTime(), true));
+    {
+        IStringStream is("");
+        EXPECT_EQ(searchType::New(dictionary(is), mesh(), "U")->type(),
+                  "particleGrid");
+    }
+    {
+        IStringStream is("pairSearch bruteForce;");
+        EXPECT_EQ(searchType::New(dictionary(is), mesh(), "U")->type(),
+                  "bruteForce");
+    }
+
+    const std::string bad(selectionError("pairSearch grid;"));
+    EXPECT_NE(bad.find("grid"), std::string::npos) << bad;
+    EXPECT_NE(bad.find("particleGrid"), std::string::npos) << bad;
+    EXPECT_NE(bad.find("interactionLists"), std::string::npos) << bad;
+
+    const std::string dist(selectionError("interactionDistance 1e-4;"));
+    EXPECT_NE(dist.find("interactionDistance"), std::string::npos) << dist;
+    EXPECT_NE(dist.find("particleGrid"), std::string::npos) << dist;
+}
