@@ -166,21 +166,19 @@ void Foam::HardSphereCollision<CloudType>::resolveEvents
             continue;
         }
 
-        const point xic(pi.startPosition() + s*(x1[c.i] - pi.startPosition()));
-        const point xjc(pj.startPosition() + s*(xj1 - pj.startPosition()));
+        // The state of a partner at the contact, on its linear track
+        auto atContact = [s](const parcelType& p, const point& x1p)
+        {
+            return hardSphereState
+            (
+                p.startPosition() + s*(x1p - p.startPosition()),
+                p.U(), p.omega(), p.d(), p.rho(), p.nPrimary()
+            );
+        };
 
         event_.set
         (
-            idI,
-            hardSphereState
-            (
-                xic, pi.U(), pi.omega(), pi.d(), pi.rho(), pi.nPrimary()
-            ),
-            idJ,
-            hardSphereState
-            (
-                xjc, pj.U(), pj.omega(), pj.d(), pj.rho(), pj.nPrimary()
-            ),
+            idI, atContact(pi, x1[c.i]), idJ, atContact(pj, xj1),
             c.iLow, c.category, s, tStart + s*dt, pi.cell()
         );
 

@@ -30,23 +30,34 @@ License
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class ParcelType>
+Foam::hardSphereWallInteraction::particle
+Foam::hardSphereWallInteraction::wallParticle(ParcelType& p)
+{
+    return particle
+    {
+        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
+    };
+}
+
+
+template<class ParcelType>
 bool Foam::hardSphereWallInteraction::contactAtRadius
 (
     ParcelType& p,
     const point& x,
-    const labelUList& wallFaces,
+    const PairSearch<ParcelType>& search,
     const scalar dt
 ) const
 {
-    particle wp
-    {
-        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
-    };
+    particle wp(wallParticle(p));
     bool moved = false;
     point xNew;
 
     const resultType result =
-        contactAtRadius(x, wallFaces, dt, wp, moved, xNew);
+        contactAtRadius
+        (
+            x, search.wallFaces(p.cell(), 0.5*p.d()), dt, wp, moved, xNew
+        );
 
     if (moved)
     {
@@ -59,10 +70,7 @@ bool Foam::hardSphereWallInteraction::contactAtRadius
 template<class ParcelType>
 bool Foam::hardSphereWallInteraction::hitCentre(ParcelType& p) const
 {
-    particle wp
-    {
-        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
-    };
+    particle wp(wallParticle(p));
     return hitCentre(p.face(), wp, p.stepFraction());
 }
 
@@ -92,11 +100,7 @@ Foam::label Foam::hardSphereWallInteraction::contactsAtRadius
             x1[i] = p.relocationTarget();
         }
 
-        nImpacts +=
-            contactAtRadius
-            (
-                p, x1[i], search.wallFaces(p.cell(), 0.5*p.d()), dt
-            );
+        nImpacts += contactAtRadius(p, x1[i], search, dt);
     }
     return nImpacts;
 }
@@ -120,12 +124,7 @@ Foam::label Foam::hardSphereWallInteraction::contactsOfFormed
         if (p.formed())
         {
             // At the relocation target: position0 (exact)
-            nImpacts +=
-                contactAtRadius
-                (
-                    p, p.relocationTarget(),
-                    search.wallFaces(p.cell(), 0.5*p.d()), dt
-                );
+            nImpacts += contactAtRadius(p, p.relocationTarget(), search, dt);
             relocate = relocate || p.relocating();
         }
     }
