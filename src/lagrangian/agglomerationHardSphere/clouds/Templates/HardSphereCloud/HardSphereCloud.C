@@ -127,6 +127,7 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
     collisionModel_(nullptr),
     rotationModel_(nullptr),
     couplingScale_(1),
+    cellOrder_(this->solution().dict(), cloudName),
     trackingTime_(0),
     collisionTime_(0)
 {
@@ -264,6 +265,17 @@ void Foam::HardSphereCloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
+    // Parcels in cell order, in the list and in memory
+    if (cellOrder_.due(this->db().time().timeIndex()))
+    {
+        clockTime sortTimer;
+        CloudCellOrder<hardSphereCloudType>::sort(*this);
+        this->updateCellOccupancy();
+        Info<< "    Cloud " << this->name() << ": parcels in cell order ("
+            << returnReduce(sortTimer.elapsedTime(), maxOp<scalar>())
+            << " s)" << endl;
+    }
+
     clockTime timer;
 
     // Start-of-step positions: the end positions of the last collision

@@ -132,7 +132,7 @@ bool Foam::AgglomerateParcel<ParcelType>::move
     {
         case trackingData::tpLinearTrack:
         {
-            ParcelType::move(cloud, td, trackTime);
+            trackLinear(cloud, td, trackTime);
             break;
         }
         case trackingData::tpRelocate:
@@ -168,6 +168,117 @@ bool Foam::AgglomerateParcel<ParcelType>::move
     }
 
     return td.keepParticle;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+bool Foam::AgglomerateParcel<ParcelType>::trackLinear
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar trackTime
+)
+{
+    typename TrackCloudType::parcelType& p =
+        static_cast<typename TrackCloudType::parcelType&>(*this);
+    typename TrackCloudType::parcelType::trackingData& ttd =
+        static_cast<typename TrackCloudType::parcelType::trackingData&>(td);
+
+    ttd.switchProcessor = false;
+    ttd.keepParticle = true;
+
+    // Completed in an earlier pass of the cloud's move
+    if (p.stepFraction() >= 1)
+    {
+        return true;
+    }
+
+    // The position: the start of the step, or, continuing after a
+    // processor transfer, computed once
+    point x(p.stepFraction() > 0 ? p.position() : position0_);
+
+    const cloudSolution& solution = cloud.solution();
+    const scalarField& cellLengthScale = cloud.cellLengthScale();
+    const scalar maxCo = solution.maxCo();
+
+    while (ttd.keepParticle && !ttd.switchProcessor && p.stepFraction() < 1)
+    {
+        const point start(x);
+        const scalar sfrac = p.stepFraction();
+
+        // Total displacement over the time step
+        const vector s(trackTime*p.U());
+
+        // Deviation from the mesh centre for reduced-D cases
+        const vector d(p.deviationFromMeshCentre());
+
+        // Fraction of the displacement of this sub-step: time and
+        // distance each at most maxCo times the step's and the cell's
+        const scalar l = cellLengthScale[p.cell()];
+        scalar f = 1 - p.stepFraction();
+        f = min(f, maxCo);
+        f = min(f, maxCo*l/max(SMALL*l, mag(s)));
+
+        if (p.active())
+        {
+            // Track to the next face: the part of the displacement not
+            // completed is returned
+            const vector dx(f*s - d);
+            x += (1 - p.trackToFace(dx, f))*dx;
+        }
+        else
+        {
+            // Stuck to a wall (a stick interaction): time passes
+            p.stepFraction() += f;
+        }
+
+        const scalar dt = (p.stepFraction() - sfrac)*trackTime;
+
+        if (dt > ROOTVSMALL)
+        {
+            p.setCellValues(cloud, ttd);
+            p.calcDispersion(cloud, ttd, dt);
+            if (solution.cellValueSourceCorrection())
+            {
+                p.cellValueSourceCorrection(cloud, ttd, dt);
+            }
+            p.calc(cloud, ttd, dt);
+        }
+
+        p.age() += dt;
+
+        if (p.active() && p.onFace())
+        {
+            cloud.functions().postFace(p, ttd.keepParticle);
+        }
+
+        cloud.functions().postMove(p, dt, start, ttd.keepParticle);
+
+        if (p.active() && p.onFace() && ttd.keepParticle)
+        {
+            // A cyclic patch moves position0 with the parcel: x moves
+            // with it (a translation), or is computed again (a rotation)
+            const point x0(position0_);
+            p.hitFace(s, cloud, ttd);
+            if (hasStatus(ROTATED))
+            {
+                status_ &= ~ROTATED;
+                x = p.position();
+            }
+            else
+            {
+                x += position0_ - x0;
+            }
+        }
+    }
+
+    if (ttd.keepParticle && !ttd.switchProcessor)
+    {
+        cloud.collision().trackedTo(p, x);
+    }
+
+    return ttd.keepParticle;
 }
 
 
@@ -233,6 +344,7 @@ void Foam::AgglomerateParcel<ParcelType>::transformProperties
 
     omega_ = transform(T, omega_);
     position0_ = transform(T, position0_);
+    setStatus(ROTATED);
 }
 
 

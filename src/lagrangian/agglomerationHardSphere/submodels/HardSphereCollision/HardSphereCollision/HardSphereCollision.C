@@ -84,23 +84,25 @@ void Foam::HardSphereCollision<CloudType>::checkParticles() const
 
 
 template<class CloudType>
-Foam::scalar Foam::HardSphereCollision<CloudType>::gather
-(
-    List<parcelType*>& parcels,
-    List<point>& x1
-)
+Foam::scalar Foam::HardSphereCollision<CloudType>::gather() const
 {
-    CloudType& cloud = this->owner();
-    const label n = cloud.size();
-    parcels.setSize(n);
-    x1.setSize(n);
+    const CloudType& cloud = this->owner();
+
+    // Every parcel's track ends here or on another processor, once
+    if (tracked_.size() != cloud.size())
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloud.name() << ": " << tracked_.size()
+            << " tracks of the step completed on this processor for "
+            << cloud.size() << " parcels" << exit(FatalError);
+    }
 
     scalar dMax = 0;
     scalar dxMag = 0;
     vector dxMax(Zero);
-    label i = 0;
-    for (parcelType& p : cloud)
+    forAll(tracked_, i)
     {
+        const parcelType& p = *tracked_[i];
         if (p.nParticle() != 1)
         {
             FatalErrorInFunction
@@ -111,13 +113,10 @@ Foam::scalar Foam::HardSphereCollision<CloudType>::gather
                 << exit(FatalError);
         }
 
-        parcels[i] = &p;
-        x1[i] = p.position();
         dMax = max(dMax, p.d());
-        const vector dx(x1[i] - p.startPosition());
+        const vector dx(trackedX1_[i] - p.startPosition());
         dxMag = max(dxMag, mag(dx));
         dxMax = max(dxMax, cmptMag(dx));
-        ++i;
     }
     reduce(dMax, maxOp<scalar>());
     reduce(dxMag, maxOp<scalar>());
@@ -127,6 +126,28 @@ Foam::scalar Foam::HardSphereCollision<CloudType>::gather
     (
         dMax, dxMag, dxMax, memory_.reach()*dMax, cloud.name()
     );
+}
+
+
+template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::checkTrackedPositions() const
+{
+    const scalar L = this->owner().mesh().bounds().mag();
+    scalar err = 0;
+    forAll(tracked_, i)
+    {
+        err = max(err, mag(trackedX1_[i] - tracked_[i]->position()));
+    }
+    reduce(err, maxOp<scalar>());
+
+    if (err > 1e-12*L)
+    {
+        FatalErrorInFunction
+            << "Cloud " << this->owner().name() << ": an end position"
+            << " kept by the tracking is " << err/L << " (relative to"
+            << " the mesh's bounding box) from the particle's position;"
+            << " round-off is below 1e-12" << exit(FatalError);
+    }
 }
 
 
@@ -179,7 +200,8 @@ void Foam::HardSphereCollision<CloudType>::resolveEvents
         event_.set
         (
             idI, atContact(pi, x1[c.i]), idJ, atContact(pj, xj1),
-            c.iLow, c.category, s, tStart + s*dt, pi.cell()
+            c.iLow, c.category, s, tStart + s*dt,
+            (c.iLow || !pjReal) ? pi.cell() : pjReal->cell()
         );
 
         resolver_->resolve(event_, pi, pjReal, c.iLow, x1[c.i], xj1, dt);
@@ -278,14 +300,17 @@ void Foam::HardSphereCollision<CloudType>::collide()
 
     audit(step.mass0, step.nPrimaries0);
 
-    List<parcelType*> parcels;
-    List<point> x1;
-    const scalar distance = gather(parcels, x1);
+    // The parcels in the order their tracks completed, and their end
+    // positions from the tracking
+    const scalar distance = gather();
+    const UList<parcelType*>& parcels = tracked_;
+    UList<point>& x1 = trackedX1_;
 
     const scalar dt = cloud.db().time().deltaTValue();
     const scalar tStart = cloud.db().time().value() - dt;
     if (oracle_.valid())
     {
+        checkTrackedPositions();
         search_->check
         (
             oracle_(), parcels, x1, distance, memory_.reach(), cloud.name()
@@ -326,11 +351,38 @@ void Foam::HardSphereCollision<CloudType>::collide()
         }
     }
 
+    tracked_.clear();
+    trackedX1_.clear();
+
     // The log goes with the written state
     if (log_.valid() && cloud.db().time().writeTime())
     {
         log_->write();
     }
+}
+
+
+template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::resetStep()
+{
+    HardSphereCollisionModel<CloudType>::resetStep();
+
+    tracked_.clear();
+    trackedX1_.clear();
+    tracked_.reserve(this->owner().size());
+    trackedX1_.reserve(this->owner().size());
+}
+
+
+template<class CloudType>
+void Foam::HardSphereCollision<CloudType>::trackedTo
+(
+    parcelType& p,
+    const point& x
+)
+{
+    tracked_.append(&p);
+    trackedX1_.append(x);
 }
 
 
