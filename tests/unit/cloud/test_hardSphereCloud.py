@@ -364,6 +364,92 @@ def test_same_run_twice_and_parallel_counts(case_dir, foam_env):
     assert sa[-1]["nParticles"] == 300 - sa[-1]["nAgg"]
 
 
+# ------------------------------------------------------------ cell order
+
+def with_cell_order(case, interval):
+    """Set the cloud's cellOrderInterval."""
+    f = Path(case) / "constant" / "kinematicCloudProperties"
+    text = f.read_text()
+    assert "solution\n{\n" in text
+    f.write_text(text.replace(
+        "solution\n{\n", f"solution\n{{\n    cellOrderInterval {interval};\n",
+        1))
+
+
+def test_cell_order_keeps_the_physics(case_dir, foam_env):
+    """The agglomerating gas with the parcels sorted into cell order at
+    every step and never: the same events (counters of every step), the
+    same particles (every field, exact, once ordered by particle id);
+    only the sums over particles of the statistics (mass, mean diameters,
+    ...), added in another order, may differ in round-off."""
+    runs = {}
+    for name, interval in (("sorted", 1), ("unsorted", 0)):
+        c = case_dir / name
+        agglomerating_gas(c, 4e-3, 40)
+        with_cell_order(c, interval)
+        run_case(c)
+        runs[name] = c
+    log = (runs["sorted"] / "log.aggloPimpleFoam").read_text()
+    assert log.count("parcels in cell order") == 40
+    assert "parcels in cell order" not in \
+        (runs["unsorted"] / "log.aggloPimpleFoam").read_text()
+    sa, sb = stats(runs["sorted"]), stats(runs["unsorted"])
+    assert len(sa) == len(sb) == 40
+    counters = ("nParticles", "nPrimaries", "nAgglomerates", "nCol",
+                "nColFirst", "nColRepeat", "nColOverlapStart", "nAgg",
+                "nSuppressed", "nSkipSeparating", "nWall", "maxPrimaries")
+    for ra, rb in zip(sa, sb):
+        assert ra.keys() == rb.keys()
+        assert {k: ra[k] for k in counters} == {k: rb[k] for k in counters}
+        for k in ra:
+            assert rb[k] == pytest.approx(ra[k], rel=1e-12, abs=1e-300), k
+    assert sa[-1]["nCol"] > 5 and sa[-1]["nAgg"] > 0 and sa[-1]["nWall"] > 0
+    a = cloud_state(runs["sorted"], "0.004")
+    b = cloud_state(runs["unsorted"], "0.004")
+    a["x"] = read_positions(cloud_dir(runs["sorted"], "0.004") / "positions")
+    b["x"] = read_positions(cloud_dir(runs["unsorted"], "0.004")
+                            / "positions")
+    ia = np.lexsort((a["origId"], a["origProcId"]))
+    ib = np.lexsort((b["origId"], b["origProcId"]))
+    assert not np.array_equal(ia, ib)  # the lists are in other orders
+    for k in a:
+        np.testing.assert_array_equal(a[k][ia], b[k][ib], err_msg=k)
+
+
+def test_cell_order_is_the_order_of_the_cells(case_dir, foam_env):
+    """Particles at rest on a 6^3 mesh, placed in random order: after a
+    step with cellOrderInterval 1 the written list ascends by cell (the
+    cell computed from the position on the uniform mesh), in id order
+    within a cell (the sort is stable); without it, the ids ascend."""
+    rng = np.random.default_rng(5)
+    Lb, n, N = 2e-4, 6, 200
+    xs = placement.place(N, 1.2 * D, (0, 0.6 * D, 0),
+                         (Lb, Lb - 0.6 * D, Lb), (Lb, None, Lb), rng)
+    parts = [dict(x=tuple(x), U=(0, 0, 0), id=i) for i, x in enumerate(xs)]
+    for interval in (1, 0):
+        c = case_dir / f"i{interval}"
+        box_case(c, L=(Lb,) * 3, n=(n,) * 3,
+                 kinds=("cyclic", "wall", "cyclic"),
+                 particles=parts, dt=1e-4, end_time=1e-4,
+                 agglomeration="EAM")
+        with_cell_order(c, interval)
+        run_case(c)
+        t = last_time(c)
+        x = read_positions(cloud_dir(c, t) / "positions")
+        ids = read_lagrangian(cloud_dir(c, t) / "origId").astype(int)
+        np.testing.assert_allclose(x, xs[ids], rtol=0, atol=1e-12 * Lb)
+        ijk = np.minimum((x / Lb * n).astype(int), n - 1)
+        cell = ijk[:, 0] + n * (ijk[:, 1] + n * ijk[:, 2])
+        if interval:
+            assert (np.diff(cell) >= 0).all()
+            same = np.diff(cell) == 0
+            assert (np.diff(ids)[same] > 0).all()
+            assert not (np.diff(ids) > 0).all()
+        else:
+            np.testing.assert_array_equal(ids, np.arange(N))
+            assert not (np.diff(cell) >= 0).all()
+
+
 # ------------------------------------------------------------ bad input
 
 BAD = {
@@ -381,6 +467,9 @@ BAD = {
     "negativeRelease": ("agglomerationModel EAM;",
                         "agglomerationModel EAM; encounterRelease -1;",
                         "encounterRelease"),
+    "negativeCellOrderInterval": ("solution\n{\n",
+                                  "solution\n{\n    cellOrderInterval -1;\n",
+                                  "cellOrderInterval"),
 }
 
 

@@ -334,6 +334,18 @@ void Foam::HardSphereCloud<CloudType>::motion
         this->updateCellOccupancy();
     }
 
+    // A written time is where a restart starts: the next step computes
+    // its start positions from the barycentric coordinates, as a restart
+    // does, not from the tracked end positions (equal to round-off), so
+    // that a restart continues exactly
+    if (this->db().time().writeTime())
+    {
+        for (parcelType& p : *this)
+        {
+            p.forgetPosition();
+        }
+    }
+
     collisionTime_ = timer.timeIncrement();
 }
 
