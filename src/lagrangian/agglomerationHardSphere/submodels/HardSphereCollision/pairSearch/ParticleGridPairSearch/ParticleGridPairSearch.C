@@ -33,11 +33,23 @@ License
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class ParcelType>
+Foam::boundBox Foam::ParticleGridPairSearch<ParcelType>::sweptBox
+(
+    const ParcelType& p,
+    const point& x1,
+    const scalar inflate
+)
+{
+    return sweptBoxGrid::sweptBox(p.startPosition(), x1, 0.5*inflate*p.d());
+}
+
+
+template<class ParcelType>
 void Foam::ParticleGridPairSearch<ParcelType>::refer
 (
     const UList<ParcelType*>& parcels,
     const UList<point>& x1,
-    const UList<boundBox>& boxes,
+    const scalar inflate,
     const vector& spanMax
 )
 {
@@ -111,11 +123,12 @@ void Foam::ParticleGridPairSearch<ParcelType>::refer
             (
                 procBb_[k].min() - spanMax, procBb_[k].max() + spanMax
             );
+            const boundBox box(sweptBox(*parcels[i], x, inflate));
             if
             (
                 !sweptBoxGrid::overlap
                 (
-                    reachK, boundBox(boxes[i].min() + s, boxes[i].max() + s)
+                    reachK, boundBox(box.min() + s, box.max() + s)
                 )
             )
             {
@@ -196,7 +209,6 @@ Foam::ParticleGridPairSearch<ParcelType>::ParticleGridPairSearch
     lattice_(mesh, "pairSearch particleGrid"),
     shifts_(lattice_.shifts(0.5*lattice_.minPeriod())),
     procBb_(Pstream::nProcs()),
-    grid_(),
     images_(),
     received_(),
     referred_(),
@@ -247,37 +259,35 @@ void Foam::ParticleGridPairSearch<ParcelType>::search
 {
     const label n = parcels.size();
 
-    // Swept boxes of the real particles and their largest span
-    List<boundBox> boxes(n);
+    // The largest span of the real particles' swept boxes
     vector spanMax(Zero);
     forAll(parcels, i)
     {
-        const ParcelType& p = *parcels[i];
-        boxes[i] = sweptBoxGrid::sweptBox
-        (
-            p.startPosition(), x1[i], 0.5*inflate*p.d()
-        );
-        spanMax = max(spanMax, boxes[i].span());
+        spanMax = max(spanMax, sweptBox(*parcels[i], x1[i], inflate).span());
     }
     reduce(spanMax, maxOp<vector>());
 
-    refer(parcels, x1, boxes, spanMax);
+    refer(parcels, x1, inflate, spanMax);
 
-    // The referred partners' boxes (their start positions are shifted
-    // with them)
+    // The boxes of the real particles, then of the referred partners
+    // (their start positions are shifted with them): one list, allocated
+    // once at its final size
     const label m = referred_.size();
-    boxes.setSize(n + m);
+    List<boundBox> boxes(n + m);
+    forAll(parcels, i)
+    {
+        boxes[i] = sweptBox(*parcels[i], x1[i], inflate);
+    }
     forAll(referred_, k)
     {
-        const ParcelType& p = *referred_[k];
-        boxes[n + k] = sweptBoxGrid::sweptBox
-        (
-            p.startPosition(), referredX1_[k], 0.5*inflate*p.d()
-        );
+        boxes[n + k] = sweptBox(*referred_[k], referredX1_[k], inflate);
     }
 
-    grid_.build(std::move(boxes), n, 0);
-    grid_.pairs(visit);
+    // The grid lives for this search only: its arrays (about 100 B per
+    // particle with the boxes) are not held between steps
+    sweptBoxGrid grid;
+    grid.build(std::move(boxes), n, 0);
+    grid.pairs(visit);
 }
 
 
