@@ -109,6 +109,18 @@ void Foam::HardSphereCloud<CloudType>::readOtherPositionForm()
 }
 
 
+template<class CloudType>
+void Foam::HardSphereCloud<CloudType>::sortByCell()
+{
+    clockTime sortTimer;
+    CloudCellOrder<hardSphereCloudType>::sort(*this);
+    this->updateCellOccupancy();
+    Info<< "    Cloud " << this->name() << ": parcels in cell order ("
+        << returnReduce(sortTimer.elapsedTime(), maxOp<scalar>())
+        << " s)" << endl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -266,14 +278,9 @@ void Foam::HardSphereCloud<CloudType>::motion
 )
 {
     // Parcels in cell order, in the list and in memory
-    if (cellOrder_.due(this->db().time().timeIndex()))
+    if (cellOrder_.dueAtStart(this->db().time().timeIndex()))
     {
-        clockTime sortTimer;
-        CloudCellOrder<hardSphereCloudType>::sort(*this);
-        this->updateCellOccupancy();
-        Info<< "    Cloud " << this->name() << ": parcels in cell order ("
-            << returnReduce(sortTimer.elapsedTime(), maxOp<scalar>())
-            << " s)" << endl;
+        sortByCell();
     }
 
     clockTime timer;
@@ -344,6 +351,12 @@ void Foam::HardSphereCloud<CloudType>::motion
         {
             p.forgetPosition();
         }
+    }
+
+    // The written order, which a restart reads, is the cell order
+    if (cellOrder_.dueAtEnd(this->db().time().writeTime()))
+    {
+        sortByCell();
     }
 
     collisionTime_ = timer.timeIncrement();

@@ -48,7 +48,8 @@ Foam::CloudCellOrder<CloudType>::CloudCellOrder
     interval_
     (
         solutionDict.getOrDefault<label>("cellOrderInterval", defaultInterval)
-    )
+    ),
+    started_(false)
 {
     if (interval_ < 0)
     {
