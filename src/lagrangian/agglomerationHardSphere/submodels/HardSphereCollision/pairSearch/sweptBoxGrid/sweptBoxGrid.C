@@ -42,8 +42,6 @@ Foam::sweptBoxGrid::sweptBoxGrid()
     spacing_(1, 1, 1),
     invSpacing_(1, 1, 1),
     mask_(0),
-    nx_(1),
-    ny_(1),
     start_(1, Zero),
     items_(),
     itemKey_()
@@ -96,8 +94,6 @@ void Foam::sweptBoxGrid::build
         invSpacing_[c] = 1/h;
     }
     origin_ = lo;
-    nx_ = uint64_t(index(hi.x(), vector::X)) + 1;
-    ny_ = uint64_t(index(hi.y(), vector::Y)) + 1;
 
     // Bin range of a box (computed in each pass rather than stored)
     FixedList<label, 6> r;
@@ -141,7 +137,7 @@ void Foam::sweptBoxGrid::build
             {
                 for (label bk = r[2]; bk <= r[5]; ++bk)
                 {
-                    ++start_[bucket(bi, bj, bk)];
+                    ++start_[bucket(key(bi, bj, bk))];
                 }
             }
         }
@@ -164,7 +160,7 @@ void Foam::sweptBoxGrid::build
                 for (label bk = r[2]; bk <= r[5]; ++bk)
                 {
                     const uint64_t k = key(bi, bj, bk);
-                    const label pos = --start_[bucket(bi, bj, bk)];
+                    const label pos = --start_[bucket(k)];
                     items_[pos] = i;
                     itemKey_[pos] = k;
                 }
