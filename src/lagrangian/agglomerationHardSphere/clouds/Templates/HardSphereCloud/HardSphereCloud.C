@@ -343,20 +343,19 @@ void Foam::HardSphereCloud<CloudType>::motion
 
     // A written time is where a restart starts: the next step computes
     // its start positions from the barycentric coordinates, as a restart
-    // does, not from the tracked end positions (equal to round-off), so
-    // that a restart continues exactly
+    // does, not from the tracked end positions (equal to round-off); the
+    // written order, which a restart reads, is the cell order. So a
+    // restart continues exactly.
     if (this->db().time().writeTime())
     {
         for (parcelType& p : *this)
         {
             p.forgetPosition();
         }
-    }
-
-    // The written order, which a restart reads, is the cell order
-    if (cellOrder_.dueAtEnd(this->db().time().writeTime()))
-    {
-        sortByCell();
+        if (cellOrder_.interval() > 0)
+        {
+            sortByCell();
+        }
     }
 
     collisionTime_ = timer.timeIncrement();
