@@ -26,7 +26,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "HardSphereStatistics.H"
-#include "HardSphereCloud.H"
 #include "hardSphereInput.H"
 #include "encounterMemory.H"
 
@@ -77,20 +76,19 @@ Foam::HardSphereStatistics<CloudType>::HardSphereStatistics
 template<class CloudType>
 void Foam::HardSphereStatistics<CloudType>::postEvolve()
 {
-    typedef HardSphereCloud<CloudType> hsCloudType;
     typedef hardSphereStep hs;
 
-    const hsCloudType* cloudPtr =
-        dynamic_cast<const hsCloudType*>(&this->owner());
-    if (!cloudPtr)
+    // The collision model's record of the stage, in the cloud's registry
+    const CloudType& cloud = this->owner();
+    if (!cloud.template foundObject<hardSphereStep>(hs::typeName))
     {
         FatalErrorInFunction
             << "The function object hardSphereStatistics needs a"
-            << " hard-sphere cloud; " << this->owner().name()
+            << " hard-sphere cloud; " << cloud.name()
             << " is not one" << exit(FatalError);
     }
-    const hsCloudType& cloud = *cloudPtr;
-    const hardSphereStep& step = cloud.collision().step();
+    const hardSphereStep& step =
+        cloud.template lookupObject<hardSphereStep>(hs::typeName);
     hardSphereStatisticsAccumulator& st = stats_();
 
     // Counters
@@ -113,8 +111,8 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
     scalar Dmax = 0;
     scalar mass = 0;
 
-    const bool profiles = st.profiles();
-    const label nBins = profiles ? st.meanU().size() : 0;
+    hardSphereProfiles* profiles = st.profiles();
+    const label nBins = profiles ? profiles->nBins() : 0;
     scalarField colBin(nBins, Zero);
     scalarField colFirstBin(nBins, Zero);
     scalarField aggBin(nBins, Zero);
@@ -123,7 +121,8 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
     scalarField sumDBin(nBins, Zero);
     vectorField sumU(nBins, Zero);
     symmTensorField sumUU(nBins, Zero);
-    const vectorField& K = st.meanU();
+    const vectorField& K =
+        profiles ? profiles->meanU() : vectorField::null();
 
     const bool writeTime = cloud.db().time().writeTime();
     Map<label> histogram;
@@ -149,7 +148,7 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
         if (profiles)
         {
             // The position of the collision stage where known
-            const label b = st.bin
+            const label b = profiles->bin
             (
                 p.positionKnown()
               ? p.knownPosition() : p.position()
@@ -174,37 +173,15 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
     reduce(Dmax, maxOp<scalar>());
     reduce(mass, sumOp<scalar>());
 
-    // Audit of the collision stage (mass0 < 0: the stage did not run)
-    if
-    (
-        step.mass0 >= 0
-     && (
-            nPrimaries != step.nPrimaries0
-         || mag(mass - step.mass0) > 1e-11*max(step.mass0, VSMALL)
-        )
-    )
-    {
-        if (Cloud<parcelType>::debug)
-        {
-            FatalErrorInFunction
-                << "Particle mass or primaries not conserved by the"
-                << " collision stage: mass " << step.mass0 << " -> "
-                << mass << ", primaries " << step.nPrimaries0 << " -> "
-                << nPrimaries << exit(FatalError);
-        }
-        WarningInFunction
-            << "Particle mass or primaries not conserved by the"
-            << " collision stage: mass " << step.mass0 << " -> " << mass
-            << ", primaries " << step.nPrimaries0 << " -> " << nPrimaries
-            << endl;
-    }
+    // Audit of the collision stage
+    step.audit(mass, nPrimaries, Cloud<parcelType>::debug);
 
     if (profiles)
     {
         // Events at their contact points
         forAll(step.eventPoint, k)
         {
-            const label b = st.bin(step.eventPoint[k]);
+            const label b = profiles->bin(step.eventPoint[k]);
             if (b >= 0)
             {
                 colBin[b] += 1;
@@ -228,8 +205,8 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
         reduce(sumU, sumOp<vectorField>());
         reduce(sumUU, sumOp<symmTensorField>());
 
-        st.addEventProfiles(colBin, colFirstBin, aggBin);
-        st.addParticleProfiles(visits, volume, sumDBin, sumU, sumUU);
+        profiles->addEvents(colBin, colFirstBin, aggBin);
+        profiles->addParticles(visits, volume, sumDBin, sumU, sumUU);
     }
 
     st.writeStep

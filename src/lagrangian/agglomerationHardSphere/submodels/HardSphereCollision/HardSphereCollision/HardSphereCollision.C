@@ -31,25 +31,6 @@ License
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::HardSphereCollision<CloudType>::audit
-(
-    scalar& mass,
-    label& nPrimaries
-) const
-{
-    mass = 0;
-    nPrimaries = 0;
-    for (const parcelType& p : this->owner())
-    {
-        mass += p.nParticle()*p.mass();
-        nPrimaries += p.nPrimary();
-    }
-    reduce(mass, sumOp<scalar>());
-    reduce(nPrimaries, sumOp<label>());
-}
-
-
-template<class CloudType>
 void Foam::HardSphereCollision<CloudType>::checkParticles() const
 {
     if (kernel_.agglomeration().type() == "none")
@@ -86,68 +67,14 @@ void Foam::HardSphereCollision<CloudType>::checkParticles() const
 template<class CloudType>
 Foam::scalar Foam::HardSphereCollision<CloudType>::gather() const
 {
-    const CloudType& cloud = this->owner();
-
-    // Every parcel's track ends here or on another processor, once
-    if (tracked_.size() != cloud.size())
-    {
-        FatalErrorInFunction
-            << "Cloud " << cloud.name() << ": " << tracked_.size()
-            << " tracks of the step completed on this processor for "
-            << cloud.size() << " parcels" << exit(FatalError);
-    }
-
-    scalar dMax = 0;
-    scalar dxMag = 0;
-    vector dxMax(Zero);
-    forAll(tracked_, i)
-    {
-        const parcelType& p = *tracked_[i];
-        if (p.nParticle() != 1)
-        {
-            FatalErrorInFunction
-                << "Cloud " << cloud.name() << ": a parcel has"
-                << " nParticle = " << p.nParticle() << "; the"
-                << " hard-sphere cloud needs one particle per parcel"
-                << " (parcelBasisType fixed, nParticle 1)"
-                << exit(FatalError);
-        }
-
-        dMax = max(dMax, p.d());
-        const vector dx(trackedX1_[i] - p.startPosition());
-        dxMag = max(dxMag, mag(dx));
-        dxMax = max(dxMax, cmptMag(dx));
-    }
-    reduce(dMax, maxOp<scalar>());
-    reduce(dxMag, maxOp<scalar>());
-    reduce(dxMax, maxOp<vector>());
+    scalar dMax, dxMag;
+    vector dxMax;
+    tracked_.check(this->owner(), dMax, dxMag, dxMax);
 
     return search_->checkedDistance
     (
-        dMax, dxMag, dxMax, memory_.reach()*dMax, cloud.name()
+        dMax, dxMag, dxMax, memory_.reach()*dMax, this->owner().name()
     );
-}
-
-
-template<class CloudType>
-void Foam::HardSphereCollision<CloudType>::checkTrackedPositions() const
-{
-    const scalar L = this->owner().mesh().bounds().mag();
-    scalar err = 0;
-    forAll(tracked_, i)
-    {
-        err = max(err, mag(trackedX1_[i] - tracked_[i]->position()));
-    }
-    reduce(err, maxOp<scalar>());
-
-    if (err > 1e-12*L)
-    {
-        FatalErrorInFunction
-            << "Cloud " << this->owner().name() << ": an end position"
-            << " kept by the tracking is " << err/L << " (relative to"
-            << " the mesh's bounding box) from the particle's position;"
-            << " round-off is below 1e-12" << exit(FatalError);
-    }
 }
 
 
@@ -298,19 +225,22 @@ void Foam::HardSphereCollision<CloudType>::collide()
     CloudType& cloud = this->owner();
     hardSphereStep& step = this->step_;
 
-    audit(step.mass0, step.nPrimaries0);
+    step.auditBefore(cloud);
 
     // The parcels in the order their tracks completed, and their end
     // positions from the tracking
     const scalar distance = gather();
-    const UList<parcelType*>& parcels = tracked_;
-    UList<point>& x1 = trackedX1_;
+    const UList<parcelType*>& parcels = tracked_.parcels();
+    UList<point>& x1 = tracked_.x1();
 
     const scalar dt = cloud.db().time().deltaTValue();
     const scalar tStart = cloud.db().time().value() - dt;
     if (oracle_.valid())
     {
-        checkTrackedPositions();
+        tracked_.checkPositions
+        (
+            cloud.mesh().bounds().mag(), cloud.name()
+        );
         search_->check
         (
             oracle_(), parcels, x1, distance, memory_.reach(), cloud.name()
@@ -336,23 +266,8 @@ void Foam::HardSphereCollision<CloudType>::collide()
             walls_.contactsAtRadius(parcels, x1, search_(), dt);
     }
 
-    // The end positions are the next step's start positions, except for
-    // the parcels still to be moved or removed
-    forAll(parcels, i)
-    {
-        parcelType& p = *parcels[i];
-        if
-        (
-            !p.relocating()
-         && !p.removed()
-        )
-        {
-            p.setKnownPosition(x1[i]);
-        }
-    }
-
-    tracked_.clear();
-    trackedX1_.clear();
+    // The end positions are the next step's start positions
+    tracked_.finish();
 
     // The log goes with the written state
     if (log_.valid() && cloud.db().time().writeTime())
@@ -367,10 +282,7 @@ void Foam::HardSphereCollision<CloudType>::resetStep()
 {
     HardSphereCollisionModel<CloudType>::resetStep();
 
-    tracked_.clear();
-    trackedX1_.clear();
-    tracked_.reserve(this->owner().size());
-    trackedX1_.reserve(this->owner().size());
+    tracked_.reset(this->owner().size());
 }
 
 
@@ -381,8 +293,7 @@ void Foam::HardSphereCollision<CloudType>::trackedTo
     const point& x
 )
 {
-    tracked_.append(&p);
-    trackedX1_.append(x);
+    tracked_.append(p, x);
 }
 
 

@@ -36,7 +36,7 @@ Foam::HardSphereCollisionModel<CloudType>::HardSphereCollisionModel
 )
 :
     CloudSubModelBase<CloudType>(owner),
-    step_()
+    step_(owner)
 {}
 
 
@@ -49,7 +49,7 @@ Foam::HardSphereCollisionModel<CloudType>::HardSphereCollisionModel
 )
 :
     CloudSubModelBase<CloudType>(owner, dict, typeName, type),
-    step_()
+    step_(owner)
 {}
 
 

@@ -27,8 +27,16 @@ License
 
 #include "hardSphereStep.H"
 #include "collisionOutcome.H"
+#include "objectRegistry.H"
+#include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(hardSphereStep, 0);
+}
+
 
 const Foam::Enum<Foam::hardSphereStep::counterType>
 Foam::hardSphereStep::counterNames
@@ -55,8 +63,19 @@ Foam::hardSphereStep::counterNames
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::hardSphereStep::hardSphereStep()
+Foam::hardSphereStep::hardSphereStep(const objectRegistry& cloud)
 :
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            cloud.time().timeName(),
+            cloud,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        )
+    ),
     counts(N_COUNTERS, Zero),
     sumDeltaL(0),
     energyGain(0),
@@ -80,6 +99,40 @@ void Foam::hardSphereStep::reset()
     eventAgglomerates.clear();
     mass0 = -1;
     nPrimaries0 = -1;
+}
+
+
+void Foam::hardSphereStep::audit
+(
+    const scalar mass,
+    const label nPrimaries,
+    const bool fatal
+) const
+{
+    if
+    (
+        mass0 < 0
+     || (
+            nPrimaries == nPrimaries0
+         && mag(mass - mass0) <= 1e-11*max(mass0, VSMALL)
+        )
+    )
+    {
+        return;
+    }
+
+    if (fatal)
+    {
+        FatalErrorInFunction
+            << "Particle mass or primaries not conserved by the"
+            << " collision stage: mass " << mass0 << " -> " << mass
+            << ", primaries " << nPrimaries0 << " -> " << nPrimaries
+            << exit(FatalError);
+    }
+    WarningInFunction
+        << "Particle mass or primaries not conserved by the"
+        << " collision stage: mass " << mass0 << " -> " << mass
+        << ", primaries " << nPrimaries0 << " -> " << nPrimaries << endl;
 }
 
 

@@ -1,0 +1,213 @@
+/*---------------------------------------------------------------------------*\
+    Unit tests of the tracked parcels of a step (TrackedParcels, mesh-free,
+    on a stand-in parcel and cloud with the interface it uses) and of the
+    step record's mass audit (hardSphereStep):
+    - check: every parcel of the cloud tracked here (fatal otherwise,
+      naming both numbers), one particle per parcel (fatal otherwise); the
+      largest diameter, displacement and displacement per axis against
+      hand values;
+    - checkPositions: an end position off by more than 1e-12 of the
+      bounding box is fatal, round-off is not;
+    - finish: the end positions become the known positions except for the
+      parcels to be moved or removed; the lists are empty after;
+    - audit: the mass and primaries after the stage against those before
+      (auditBefore sums them over the cloud): silent within 1e-11 relative,
+      fatal (or a warning) beyond, nothing if the stage did not run.
+\*---------------------------------------------------------------------------*/
+
+#include "TrackedParcels.H"
+#include "hardSphereStep.H"
+#include "Time.H"
+#include <gtest/gtest.h>
+#include <functional>
+#include <list>
+
+using namespace Foam;
+
+namespace
+{
+
+//- The parcel interface TrackedParcels and the audit use
+struct testParcel
+{
+    point x0 = Zero;            // start position
+    point x = Zero;             // the particle's position
+    scalar d_ = 10e-6;
+    scalar n_ = 1;
+    scalar mass_ = 1e-12;
+    label nPrimary_ = 1;
+    bool relocating_ = false, removed_ = false;
+    bool known_ = false;
+    point knownX = Zero;
+
+    scalar d() const { return d_; }
+    scalar nParticle() const { return n_; }
+    scalar mass() const { return mass_; }
+    label nPrimary() const { return nPrimary_; }
+    const point& startPosition() const { return x0; }
+    point position() const { return x; }
+    bool relocating() const { return relocating_; }
+    bool removed() const { return removed_; }
+    void setKnownPosition(const point& p) { known_ = true; knownX = p; }
+};
+
+//- The cloud interface: a name, a size and its parcels
+struct testCloud
+{
+    std::list<testParcel> parcels;
+    word name() const { return "testCloud"; }
+    label size() const { return parcels.size(); }
+    std::list<testParcel>::const_iterator begin() const
+    {
+        return parcels.begin();
+    }
+    std::list<testParcel>::const_iterator end() const
+    {
+        return parcels.end();
+    }
+};
+
+std::string message(const std::function<void()>& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Foam::error& err)
+    {
+        return std::string(err.message());
+    }
+    return "";
+}
+
+} // End anonymous namespace
+
+
+TEST(trackedParcels, checkAndExtent)
+{
+    testCloud cloud;
+    cloud.parcels.resize(3);
+    auto it = cloud.parcels.begin();
+    testParcel& a = *it++;
+    testParcel& b = *it++;
+    testParcel& c = *it;
+    b.d_ = 30e-6;
+    c.d_ = 20e-6;
+    b.x0 = point(1, 1, 1);
+    c.x0 = point(0, 0, 1);
+
+    TrackedParcels<testParcel> tracked;
+    tracked.reset(3);
+    tracked.append(a, point(0.3, -0.4, 0));      // |dx| 0.5
+    tracked.append(b, point(1, 1.6, 1));         // |dx| 0.6 along y
+    tracked.append(c, point(-0.2, 0, 1.1));
+
+    scalar dMax = -1, dxMag = -1;
+    vector dxMax(-1, -1, -1);
+    tracked.check(cloud, dMax, dxMag, dxMax);
+    EXPECT_EQ(dMax, 30e-6);
+    EXPECT_NEAR(dxMag, 0.6, 1e-15);
+    EXPECT_NEAR(dxMax.x(), 0.3, 1e-15);
+    EXPECT_NEAR(dxMax.y(), 0.6, 1e-15);
+    EXPECT_NEAR(dxMax.z(), 0.1, 1e-15);
+
+    // A fourth parcel that was not tracked here
+    cloud.parcels.emplace_back();
+    const std::string missing
+    (
+        message([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
+    );
+    EXPECT_NE(missing.find("3 tracks"), std::string::npos) << missing;
+    EXPECT_NE(missing.find("4 parcels"), std::string::npos) << missing;
+    cloud.parcels.pop_back();
+
+    // A parcel of two particles
+    b.n_ = 2;
+    const std::string two
+    (
+        message([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
+    );
+    EXPECT_NE(two.find("nParticle = 2"), std::string::npos) << two;
+}
+
+
+TEST(trackedParcels, positionsAndFinish)
+{
+    testParcel a, b, c;
+    a.x = point(1e-3, 0, 0);
+    b.x = point(0, 2e-3, 0);
+    c.x = point(0, 0, 3e-3);
+    b.relocating_ = true;
+    c.removed_ = true;
+
+    TrackedParcels<testParcel> tracked;
+    tracked.reset(3);
+    const scalar L = 1e-2;
+    tracked.append(a, a.x + vector(1e-15, 0, 0));      // round-off
+    tracked.append(b, b.x);
+    tracked.append(c, c.x);
+    EXPECT_EQ(message([&]{ tracked.checkPositions(L, "c"); }), "");
+
+    tracked.reset(3);
+    tracked.append(a, a.x + vector(0, 2e-12*L, 0));     // beyond
+    tracked.append(b, b.x);
+    const std::string off(message([&]{ tracked.checkPositions(L, "c"); }));
+    EXPECT_NE(off.find("round-off"), std::string::npos) << off;
+
+    tracked.reset(3);
+    tracked.append(a, point(4, 5, 6));
+    tracked.append(b, point(7, 8, 9));
+    tracked.append(c, point(1, 2, 3));
+    tracked.finish();
+    EXPECT_TRUE(a.known_);
+    EXPECT_EQ(a.knownX, point(4, 5, 6));
+    EXPECT_FALSE(b.known_);
+    EXPECT_FALSE(c.known_);
+    EXPECT_EQ(tracked.parcels().size(), 0);
+    EXPECT_EQ(tracked.x1().size(), 0);
+}
+
+
+TEST(hardSphereStep, massAudit)
+{
+    autoPtr<Time> runTime(Time::New());
+    hardSphereStep step(runTime());
+
+    // The stage did not run: nothing to audit
+    EXPECT_EQ(message([&]{ step.audit(1, 1, true); }), "");
+
+    testCloud cloud;
+    cloud.parcels.resize(3);
+    auto it = cloud.parcels.begin();
+    it->mass_ = 1e-12;
+    (++it)->mass_ = 2e-12;
+    it->nPrimary_ = 4;
+    (++it)->mass_ = 3e-12;
+    step.auditBefore(cloud);
+    EXPECT_NEAR(step.mass0, 6e-12, 1e-27);
+    EXPECT_EQ(step.nPrimaries0, 6);
+
+    EXPECT_EQ(message([&]{ step.audit(6e-12*(1 + 5e-12), 6, true); }), "");
+
+    const std::string mass
+    (
+        message([&]{ step.audit(6e-12*(1 + 2e-11), 6, true); })
+    );
+    EXPECT_NE(mass.find("not conserved"), std::string::npos) << mass;
+
+    const std::string primaries
+    (
+        message([&]{ step.audit(6e-12, 5, true); })
+    );
+    EXPECT_NE(primaries.find("primaries 6 -> 5"), std::string::npos)
+        << primaries;
+
+    // Without debug a warning, no error
+    EXPECT_EQ(message([&]{ step.audit(6e-12, 5, false); }), "");
+
+    // The record is in the registry under its type name
+    EXPECT_TRUE(runTime().foundObject<hardSphereStep>("hardSphereStep"));
+}
+
+
+// ************************************************************************* //
