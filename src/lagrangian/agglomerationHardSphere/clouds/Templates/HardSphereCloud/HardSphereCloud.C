@@ -26,10 +26,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "HardSphereCloud.H"
-#include "IOPosition.H"
 #include "wallPolyPatch.H"
 #include "clockTime.H"
-#include "fvcCurl.H"
 #include "hardSphereCloudState.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -73,39 +71,6 @@ void Foam::HardSphereCloud<CloudType>::setModels()
         ).ptr()
     );
 
-}
-
-
-template<class CloudType>
-void Foam::HardSphereCloud<CloudType>::readOtherPositionForm()
-{
-    if (this->size())
-    {
-        return;
-    }
-
-    for
-    (
-        const cloud::geometryType geom
-      : {cloud::geometryType::COORDINATES, cloud::geometryType::POSITIONS}
-    )
-    {
-        IOPosition<Cloud<parcelType>> ioP(*this, geom);
-        if (!ioP.headerOk())
-        {
-            continue;
-        }
-        Istream& is = ioP.readStream("", true);
-        ioP.readData(is, *this);
-        ioP.close();
-
-        if (this->size())
-        {
-            Pout<< "    Cloud " << this->name() << ": read " << this->size()
-                << " particles from " << ioP.objectPath() << endl;
-            break;
-        }
-    }
 }
 
 
@@ -156,7 +121,6 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
 
         if (readFields)
         {
-            readOtherPositionForm();
             parcelType::readFields(*this);
             hardSphereCloudState::check
             (
@@ -211,44 +175,14 @@ void Foam::HardSphereCloud<CloudType>::evolve()
         trackingTime_ = 0;
         collisionTime_ = 0;
 
-        // The vorticity for the rotation model: once per step, registered
-        // under the name the lift forces look for
-        const word& wName = rotationModel_->vorticityName();
-        const bool makeVorticity =
-            rotationModel_->needsVorticity()
-         && !this->mesh().template foundObject<volVectorField>(wName);
-
-        if (makeVorticity)
-        {
-            volVectorField* curlUcPtr = new volVectorField
-            (
-                IOobject
-                (
-                    wName,
-                    this->db().time().timeName(),
-                    this->mesh(),
-                    IOobject::NO_READ,
-                    IOobject::NO_WRITE
-                ),
-                fvc::curl(this->U())
-            );
-            curlUcPtr->store();
-        }
+        // The vorticity for the rotation model and the lift forces
+        const bool vorticity = rotationModel_->storeVorticity();
 
         typename parcelType::trackingData td(*this);
 
         this->solve(*this, td);
 
-        // A lift force may have removed it already
-        if
-        (
-            makeVorticity
-         && this->mesh().template foundObject<volVectorField>(wName)
-        )
-        {
-            this->mesh().template lookupObjectRef<volVectorField>(wName)
-                .checkOut();
-        }
+        rotationModel_->releaseVorticity(vorticity);
 
         // The whole cloud step: nothing hides outside the three timers
         // (the rest: vorticity, injection, forces set-up, sources, cloud

@@ -30,6 +30,19 @@ License
 #include "wallPolyPatch.H"
 #include "particleKeyedModel.H"
 
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::wordList Foam::AgglomerateParcel<ParcelType>::ownFieldNames()
+{
+    return wordList
+    ({
+        "omega", "nPrimary", "lastPartnerProc", "lastPartnerId",
+        "lastContactTime"
+    });
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class ParcelType>

@@ -26,6 +26,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "AgglomerateParcel.H"
+#include "agglomerateParcelFieldIO.H"
+#include "IOPosition.H"
 #include "IOstreams.H"
 #include "IOField.H"
 
@@ -101,87 +103,47 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
 }
 
 
-// * * * * * * * * * * * * * * * Local Helpers * * * * * * * * * * * * * * * //
-
-namespace Foam
-{
-namespace agglomerateParcelIO
-{
-
-//- Fatal error unless a field read from file has one value per particle
-template<class Type, class CloudType>
-void checkSize(const CloudType& c, const IOField<Type>& fld)
-{
-    if (fld.size() != c.size())
-    {
-        FatalErrorInFunction
-            << "Cloud " << c.name() << ": the field " << fld.objectPath()
-            << " has " << fld.size() << " values for " << c.size()
-            << " particles (one value per particle is needed)"
-            << exit(FatalError);
-    }
-}
-
-
-//- Read an optional parcel field; only an absent file gives an empty
-//  field (a file of the wrong length is fatal)
-template<class Type, class CloudType>
-tmp<IOField<Type>> readOptional(CloudType& c, const word& name)
-{
-    const bool valid = c.size();
-    IOobject io(c.fieldIOobject(name, IOobject::READ_IF_PRESENT));
-    const bool present = valid && io.typeHeaderOk<IOField<Type>>(true);
-
-    tmp<IOField<Type>> tfld(new IOField<Type>(io, valid));
-
-    if (present)
-    {
-        checkSize(c, tfld());
-    }
-
-    return tfld;
-}
-
-
-//- Fatal error naming the field, the particle and the value unless ok
-template<class Type, class CloudType>
-void checkValue
-(
-    const CloudType& c,
-    const bool ok,
-    const word& field,
-    const label i,
-    const Type& value,
-    const char* valid
-)
-{
-    if (!ok)
-    {
-        FatalErrorInFunction
-            << "Cloud " << c.name() << ": particle " << i << " has "
-            << field << " = " << value << " in "
-            << c.time().timeName()/cloud::prefix/c.name()/field
-            << "; valid: " << valid << exit(FatalError);
-    }
-}
-
-
-inline bool finite(const vector& v)
-{
-    return
-        std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
-}
-
-} // End namespace agglomerateParcelIO
-} // End namespace Foam
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+template<class CloudType>
+void Foam::AgglomerateParcel<ParcelType>::readOtherPositionForm(CloudType& c)
+{
+    if (c.size())
+    {
+        return;
+    }
+
+    for
+    (
+        const cloud::geometryType geom
+      : {cloud::geometryType::COORDINATES, cloud::geometryType::POSITIONS}
+    )
+    {
+        IOPosition<Cloud<AgglomerateParcel<ParcelType>>> ioP(c, geom);
+        if (!ioP.headerOk())
+        {
+            continue;
+        }
+        Istream& is = ioP.readStream("", true);
+        ioP.readData(is, c);
+        ioP.close();
+
+        if (c.size())
+        {
+            Pout<< "    Cloud " << c.name() << ": read " << c.size()
+                << " particles from " << ioP.objectPath() << endl;
+            break;
+        }
+    }
+}
+
 
 template<class ParcelType>
 template<class CloudType>
 void Foam::AgglomerateParcel<ParcelType>::readFields(CloudType& c)
 {
+    readOtherPositionForm(c);
     ParcelType::readFields(c);
 
     // Optional: a stock kinematic cloud result still loads, as primaries
@@ -403,12 +365,12 @@ Foam::Ostream& Foam::operator<<
     {
         os  << static_cast<const ParcelType&>(p)
             << token::SPACE << p.omega()
-            << token::SPACE << p.position0()
+            << token::SPACE << p.position0_
             << token::SPACE << p.lastContactTime()
             << token::SPACE << p.nPrimary()
             << token::SPACE << p.lastPartner().first()
             << token::SPACE << p.lastPartner().second()
-            << token::SPACE << p.status();
+            << token::SPACE << p.status_;
     }
     else
     {

@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "ParticleRotationModel.H"
+#include "fvcCurl.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -37,6 +38,58 @@ Foam::ParticleRotationModel<CloudType>::ParticleRotationModel
 :
     CloudSubModelBase<CloudType>(owner)
 {}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+bool Foam::ParticleRotationModel<CloudType>::storeVorticity() const
+{
+    const fvMesh& mesh = this->owner().mesh();
+    if
+    (
+        !needsVorticity()
+     || mesh.template foundObject<volVectorField>(vorticityName())
+    )
+    {
+        return false;
+    }
+
+    volVectorField* curlUcPtr = new volVectorField
+    (
+        IOobject
+        (
+            vorticityName(),
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        fvc::curl(this->owner().U())
+    );
+    curlUcPtr->store();
+
+    return true;
+}
+
+
+template<class CloudType>
+void Foam::ParticleRotationModel<CloudType>::releaseVorticity
+(
+    const bool stored
+) const
+{
+    const fvMesh& mesh = this->owner().mesh();
+    if
+    (
+        stored
+     && mesh.template foundObject<volVectorField>(vorticityName())
+    )
+    {
+        mesh.template lookupObjectRef<volVectorField>(vorticityName())
+            .checkOut();
+    }
+}
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
