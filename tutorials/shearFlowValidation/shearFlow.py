@@ -24,7 +24,8 @@ import numpy as np
 
 from aggloTools import (cloud, fields, placement, progress as prog,
                         regression as reg, render, stats, times)
-from aggloTools.foamfile import check_keys, read_dict
+from aggloTools import casesettings
+from aggloTools.foamfile import check_keys
 
 import shearStatements
 
@@ -85,17 +86,12 @@ COMMON_KEYS = {"gammaDot", "delta", "LzByDelta", "ny", "nz", "dParticle",
 
 def presets():
     """The presets file, every entry checked."""
-    ps = read_dict(HERE / "presets")
-    for name, p in ps.items():
-        check_keys(p, COMMON_KEYS if name == "common"
-                          else PRESET_KEYS, f"presets/{name}")
-    return ps
+    return casesettings.read_presets(HERE / "presets", PRESET_KEYS,
+                                     {"common": COMMON_KEYS})
 
 
 def on_off(v, where):
-    if v not in ("on", "off"):
-        raise SystemExit(f"{where} '{v}' is not one of: on off")
-    return v
+    return casesettings.choice(v, ("on", "off"), where)
 
 
 #: The readings a study may vary (shearStudy.py), with their values; the
@@ -162,13 +158,10 @@ def settings(preset, run, variant=None):
     check_reading(dict(variant or {}), f"variant of {preset}/{run}")
     variant = dict(tutorial_readings(), **(variant or {}))
     ps = presets()
-    if preset not in ps or preset == "common":
-        raise SystemExit(f"unknown preset {preset!r}: valid presets are "
-                         + ", ".join(k for k in ps if k != "common"))
-    if run not in RUNS:
-        raise SystemExit(f"unknown run {run!r}: valid runs are "
-                         + ", ".join(RUNS))
-    c, p = ps["common"], ps[preset]
+    p = casesettings.named(ps, preset, "preset", "shearFlow.py",
+                           exclude=("common",))
+    casesettings.choice(run, RUNS, "shearFlow.py: run")
+    c = ps["common"]
     gamma, delta = float(c["gammaDot"]), float(c["delta"])
     detect = run == "detect"
     dt_g = float(p.get("detectDtGamma", c["detectDtGamma"]) if detect
@@ -228,10 +221,7 @@ SETTINGS_KEYS = {"preset", "run", "gammaDot", "delta", "yMin", "uWall",
 
 def read_settings(case):
     """The caseSettings of a run, every entry checked."""
-    f = Path(case) / "system" / "caseSettings"
-    s = read_dict(f)
-    check_keys(s, SETTINGS_KEYS, str(f))
-    return s
+    return casesettings.read_settings(case, SETTINGS_KEYS)
 
 
 # -------------------------------------------------------------------- init

@@ -44,7 +44,7 @@ from pathlib import Path
 import numpy as np
 
 from aggloTools import cloud, fields, placement, progress as prog, times
-from aggloTools.foamfile import check_keys, read_dict
+from aggloTools import casesettings
 
 HERE = Path(__file__).resolve().parent
 
@@ -82,27 +82,15 @@ CONFIGURATION_KEYS = {"subModels", "wall", "d", "en"}
 
 def read_presets():
     """The presets file, every entry checked."""
-    d = read_dict(HERE / "presets")
-    for name, p in d.items():
-        if name == "configurations":
-            for c, cd in p.items():
-                check_keys(cd, CONFIGURATION_KEYS,
-                                  f"presets/configurations/{c}")
-        else:
-            check_keys(p, COMMON_KEYS if name == "common"
-                              else PRESET_KEYS, f"presets/{name}")
-    return d
+    return casesettings.read_presets(
+        HERE / "presets", PRESET_KEYS, {"common": COMMON_KEYS},
+        {"configurations": CONFIGURATION_KEYS})
 
 
 def preset(name):
     """The merged settings of a preset (common values first)."""
-    d = read_presets()
-    if name not in d or name in ("common", "configurations"):
-        valid = [k for k in d if k not in ("common", "configurations")]
-        sys.exit(f"channel.py: unknown preset '{name}'; valid: "
-                 + " ".join(valid))
-    p = dict(d["common"])
-    p.update(d[name])
+    p = casesettings.merged(read_presets(), name, "channel.py",
+                            exclude=("configurations",))
     p["name"] = name
     p.setdefault("seededPairs", 0)
     p["n"] = [int(x) for x in _nums(p["n"])]
@@ -113,9 +101,8 @@ def preset(name):
     choices = {"writeFormat": ("ascii", "binary"),
                "writePositions": ("on", "off"), "eventLog": ("on", "off")}
     for key, valid in choices.items():
-        if p[key] not in valid:
-            sys.exit(f"channel.py: presets/{name}: {key} '{p[key]}' is not"
-                     f" one of: " + " ".join(valid))
+        casesettings.choice(p[key], valid,
+                            f"channel.py: presets/{name}: {key}")
     if not isinstance(p["purgeWrite"], int) or p["purgeWrite"] < 0:
         sys.exit(f"channel.py: presets/{name}: purgeWrite '{p['purgeWrite']}'"
                  " must be an integer >= 0 (0 keeps every write)")
@@ -123,11 +110,8 @@ def preset(name):
 
 
 def configuration(name):
-    d = read_presets()["configurations"]
-    if name not in d:
-        sys.exit(f"channel.py: unknown configuration '{name}'; valid: "
-                 + " ".join(d))
-    c = dict(d[name])
+    c = dict(casesettings.named(read_presets()["configurations"], name,
+                                "configuration", "channel.py"))
     c["name"] = name
     c["twoWay"] = c["subModels"] == "on"
     return c
@@ -149,12 +133,9 @@ def end_time(p, stage):
 
 def settings(pname, cname, stage, models=(), nprocs=1):
     p, c = preset(pname), configuration(cname)
-    if stage not in STAGES:
-        sys.exit(f"channel.py: unknown stage '{stage}'; valid: "
-                 + " ".join(STAGES))
+    casesettings.choice(stage, STAGES, "channel.py: stage")
     for m in models:
-        if m not in MODELS:
-            sys.exit(f"channel.py: unknown model '{m}'; valid: EAM MAM")
+        casesettings.choice(m, MODELS, "channel.py: model")
     if stage == "agglomeration":
         if not models:
             models = ("EAM",) if c["twoWay"] else MODELS
@@ -264,10 +245,7 @@ SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
 
 def read_settings(case):
     """The caseSettings of a stage, every entry checked."""
-    f = Path(case) / "system" / "caseSettings"
-    s = read_dict(f)
-    check_keys(s, SETTINGS_KEYS, str(f))
-    return s
+    return casesettings.read_settings(case, SETTINGS_KEYS)
 
 
 def cell_centres(case, time="0"):
