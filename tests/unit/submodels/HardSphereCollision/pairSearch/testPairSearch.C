@@ -6,7 +6,10 @@
     pairs found here independently, by a hand-written O(N^2) loop over
     every periodic image: the pairs whose swept boxes (inflated by
     1.1 d/2) overlap; run-time selection names the searches and rejects a
-    misspelt one and interactionDistance with another search.
+    misspelt one and interactionDistance with another search;
+    interactionLists, whose cells are the bins, visits a superset of
+    those pairs at the search distance of the stage (d_max + 2 max|dx|
+    per axis, inflated as the boxes are).
 \*---------------------------------------------------------------------------*/
 
 #include "ParticleGridPairSearch.H"
@@ -14,6 +17,8 @@
 #include "basicAgglomerateParcel.H"
 #include "blockMesh.H"
 #include "Time.H"
+#include "fvMesh.H"
+#include "volFields.H"
 #include "IStringStream.H"
 #include "HashTable.H"
 #include <gtest/gtest.h>
@@ -94,6 +99,51 @@ autoPtr<polyMesh> boxMesh(const Time& runTime, const bool periodic)
 }
 
 
+//- The box as an fvMesh with a velocity field U (the interactionLists
+//  search refers wall data with it)
+struct fvBox
+{
+    autoPtr<fvMesh> mesh;
+    autoPtr<volVectorField> U;
+
+    fvBox(const Time& runTime, const bool periodic)
+    {
+        autoPtr<polyMesh> pm(boxMesh(runTime, periodic));
+        mesh.reset
+        (
+            new fvMesh
+            (
+                IOobject
+                (
+                    polyMesh::defaultRegion, runTime.constant(), runTime,
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                pointField(pm().points()),
+                faceList(pm().faces()),
+                labelList(pm().faceOwner()),
+                labelList(pm().faceNeighbour())
+            )
+        );
+        List<polyPatch*> patches(pm().boundaryMesh().size());
+        forAll(patches, i)
+        {
+            patches[i] =
+                pm().boundaryMesh()[i].clone(mesh().boundaryMesh()).ptr();
+        }
+        mesh().addFvPatches(patches);
+        U.reset
+        (
+            new volVectorField
+            (
+                IOobject("U", runTime.timeName(), mesh()),
+                mesh(),
+                dimensionedVector(dimVelocity, Zero)
+            )
+        );
+    }
+};
+
+
 //- A random cloud: n particles of 20-60 um, start positions in the box
 //  (away from the walls by a radius), displacements up to 'move' per
 //  component; the parcels own themselves (deleted by the caller)
@@ -124,6 +174,39 @@ void randomCloud
         parcels[i] = p;
         x1[i] =
             x0 + move*vector(2*u(gen) - 1, 2*u(gen) - 1, 2*u(gen) - 1);
+    }
+}
+
+
+//- A random cloud as the collision stage sees it: the particles at their
+//  end positions x1, in the box, the start positions displaced by up to
+//  'move' per component (outside the box after a cyclic crossing)
+void endCloud
+(
+    const polyMesh& mesh,
+    const label n,
+    const scalar move,
+    const unsigned seed,
+    List<basicAgglomerateParcel*>& parcels,
+    List<point>& x1
+)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    parcels.setSize(n);
+    x1.setSize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar d = 20e-6 + 40e-6*u(gen);
+        x1[i] = point(1e-3*u(gen), 0.5*d + (1e-3 - d)*u(gen), 1e-3*u(gen));
+        basicAgglomerateParcel* p =
+            new basicAgglomerateParcel(mesh, x1[i], mesh.findCell(x1[i]));
+        p->d() = d;
+        p->setKnownPosition
+        (
+            x1[i] - move*vector(2*u(gen) - 1, 2*u(gen) - 1, 2*u(gen) - 1)
+        );
+        parcels[i] = p;
     }
 }
 
@@ -279,6 +362,76 @@ TEST(pairSearch, particleGridEqualsOracleWithoutCyclics)
     EXPECT_EQ(candidates(oracle, f.parcels, f.x1, 0), expected);
     EXPECT_EQ(candidates(grid, f.parcels, f.x1, 0), expected);
     EXPECT_EQ(grid.nReferred(), 0);
+}
+
+
+TEST(pairSearch, interactionListsCoversOracle)
+{
+    for (const bool periodic : {true, false})
+    {
+        const scalar move = periodic ? 40e-6 : 80e-6;
+        autoPtr<Time> runTime(Time::New());
+        fvBox box(runTime(), periodic);
+        struct
+        {
+            List<basicAgglomerateParcel*> parcels;
+            List<point> x1;
+            const polyMesh& mesh() const { return *meshPtr; }
+            const polyMesh* meshPtr;
+        } f;
+        f.meshPtr = &box.mesh();
+        endCloud
+        (
+            box.mesh(), periodic ? 400 : 300, move,
+            7u + (periodic ? 400 : 300), f.parcels, f.x1
+        );
+        // Selected at run time: the library's instantiation
+        IStringStream is("pairSearch interactionLists;");
+        autoPtr<searchType> listsPtr
+        (
+            searchType::New(dictionary(is), f.mesh(), "U")
+        );
+        searchType& lists = listsPtr();
+
+        // The stage's search distance: largest diameter (inflated as the
+        // boxes are) and twice the largest displacement
+        scalar dMax = 0;
+        scalar dxMax = 0;
+        forAll(f.parcels, i)
+        {
+            dMax = max(dMax, f.parcels[i]->d());
+            dxMax =
+                max(dxMax, mag(f.x1[i] - f.parcels[i]->startPosition()));
+        }
+        const scalar distance = 1.1*dMax + 2*dxMax;
+
+        const std::set<pairKey> expected
+        (
+            handOracle(f.parcels, f.x1, periodic)
+        );
+        std::set<pairKey> got;
+        try
+        {
+            got = candidates(lists, f.parcels, f.x1, distance);
+        }
+        catch (const Foam::error& err)
+        {
+            FAIL() << err.message();
+        }
+        ASSERT_GT(expected.size(), 50u);
+        label missing = 0;
+        for (const pairKey& k : expected)
+        {
+            missing += !got.count(k);
+        }
+        EXPECT_EQ(missing, 0) << "periodic " << periodic;
+        EXPECT_GE(got.size(), expected.size());
+        EXPECT_EQ(lists.nReferred() > 0, periodic);
+        for (basicAgglomerateParcel* p : f.parcels)
+        {
+            delete p;
+        }
+    }
 }
 
 
