@@ -21,6 +21,7 @@ from aggloTools import eventlog, regression as reg
 from aggloTools.eventlog import BASE, EN_SCAN as EN
 
 import shearFlow
+import shearTheory
 
 HERE = Path(__file__).resolve().parent
 MODELS = ("EAM", "MAM")
@@ -35,7 +36,7 @@ def replay(preset, runs_dir=None, out_dir=None):
         print(f"shearReplay.py: no collision event logs under {runs_dir}")
         return None
     s = shearFlow.read_settings(runs_dir / logs[0])
-    a_th = float(shearFlow.alpha_th(float(s["dParticle"]),
+    a_th = float(shearTheory.alpha_th(float(s["dParticle"]),
                                     float(s["gammaDot"])))
     out.mkdir(parents=True, exist_ok=True)
     summary = {"preset": preset, "en": list(EN), "alpha_th": a_th,

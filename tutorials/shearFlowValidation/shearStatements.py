@@ -51,7 +51,7 @@ PAPER_END = 1400.0
 
 def statements(runs, alpha_th, unresolved=None):
     """The rows of S1-S4 (and S4b, reported) for runs {"EAM": Run,
-    "MAM": Run} (shearFlow.Run); unresolved: the reason why this set-up
+    "MAM": Run} (shearPost.Run); unresolved: the reason why this set-up
     cannot judge them (every row n/r with it)."""
     e, m = runs["EAM"], runs["MAM"]
     rows = []

@@ -27,7 +27,9 @@ from aggloTools.foamfile import check_keys, read_dict
 
 import shearDiagnosis
 import shearFlow
+import shearPost
 import shearStatements
+import shearTheory
 
 HERE = Path(__file__).resolve().parent
 MODELS = ("EAM", "MAM")
@@ -156,7 +158,7 @@ def kernel_entries(model, reading):
 
 def run_info(case, a_th):
     """The counts of one run: stats.dat and its collision-event log."""
-    r = shearFlow.Run(case)
+    r = shearPost.Run(case)
     ev = eventlog.read_events(case)
     info = {"run": f"{case.parent.name}/{case.name}",
             "N_col": r.final("nCol"), "N_agg": r.final("nAgg")}
@@ -208,7 +210,7 @@ def post(preset, runs_dir=None, out_dir=None):
         print("shearStudy.py: runs not finished: " + " ".join(missing))
         return 1
     d = shearFlow.settings(preset, "EAM")
-    a_th = float(shearFlow.alpha_th(d["dParticle"], d["gammaDot"]))
+    a_th = float(shearTheory.alpha_th(d["dParticle"], d["gammaDot"]))
     und = undisturbed(runs_dir, vs)
     mine = shearFlow.tutorial_readings()
     default = next((n for n, v in vs.items() if full_reading(v) == mine),

@@ -20,8 +20,7 @@ import pytest
 from aggloTools.runner import project_dir, tutorial_module
 
 TUT = project_dir() / "tutorials" / "shearFlowValidation"
-tutorial_module("shearFlowValidation", "shearStatements")
-shearFlow = tutorial_module("shearFlowValidation", "shearFlow")
+shearTheory = tutorial_module("shearFlowValidation", "shearTheory")
 
 
 def saturated_fraction(png):
@@ -39,15 +38,15 @@ def test_alpha_theory_matches_spec_table():
     """doc/cases.md B.2: f(1, 2, 4 um) = 0.95, 0.87, 0.79 (van de Ven & Mason),
     f(25 um) = 0.5785, the group 1.4538e-7 and alpha_th at the tabulated
     diameters."""
-    assert shearFlow.f_vdVM([1e-6, 2e-6, 4e-6]) == pytest.approx(
+    assert shearTheory.f_vdVM([1e-6, 2e-6, 4e-6]) == pytest.approx(
         [0.95, 0.87, 0.79], abs=1e-12)
-    assert shearFlow.f_vdVM(25e-6) == pytest.approx(0.5785, abs=1e-4)
+    assert shearTheory.f_vdVM(25e-6) == pytest.approx(0.5785, abs=1e-4)
     group = 8 * 2.28e-21 / (36 * math.pi * 1e-3 * 71 * (25e-6)**3)
     assert group == pytest.approx(1.4538e-7, rel=1e-4)
     table = {25: 3.401, 26: 3.303, 27: 3.212, 28: 3.126, 30: 2.970,
              31.50: 2.863}
     for d, a in table.items():
-        assert 100 * shearFlow.alpha_th(d * 1e-6) == pytest.approx(
+        assert 100 * shearTheory.alpha_th(d * 1e-6) == pytest.approx(
             a, abs=6e-4)
 
 
@@ -55,7 +54,7 @@ def test_kernel_and_decay_match_spec():
     """K_ST = 1.4792e-12 m3/s, the initial rate 650/s, and the B.8
     recursion with K = K_ST and alpha = 0.034 over t*gammaDot = 1400:
     0.9942 (consistent) and 0.9885 (printed)."""
-    K = shearFlow.kernel_ST(25e-6)
+    K = shearTheory.kernel_ST(25e-6)
     assert K == pytest.approx(1.4792e-12, rel=1e-4)
     V, N0, gamma = 6.4e-6, 75000, 71.0
     assert 0.5 * K * (N0 / V)**2 * V == pytest.approx(650.0, rel=1e-3)
@@ -63,7 +62,7 @@ def test_kernel_and_decay_match_spec():
     dn = np.full(n, 0.5 * K * N0**2 / V * dt)   # constant n (B.4)
     ns = np.full(n, N0)
     for form, end in (("consistent", 0.9942), ("printed", 0.9885)):
-        th = shearFlow.decay_theory(N0, dn, ns, 0.0340, form)
+        th = shearTheory.decay_theory(N0, dn, ns, 0.0340, form)
         assert th[-1] / N0 == pytest.approx(end, abs=1e-4)
 
 
@@ -73,7 +72,7 @@ def test_decay_removes_alpha_particles_per_collision():
     N0, a = 1e6, 0.05
     dn = np.array([10.0])
     for form, c in (("consistent", 1), ("printed", 2)):
-        th = shearFlow.decay_theory(N0, dn, [N0], a, form)
+        th = shearTheory.decay_theory(N0, dn, [N0], a, form)
         assert N0 - th[1] == pytest.approx(c * a * 10, rel=1e-5)
 
 
