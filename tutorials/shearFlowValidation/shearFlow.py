@@ -26,11 +26,10 @@ from aggloTools import cloud, fields, placement, progress as prog, times
 from aggloTools import casesettings
 from aggloTools.foamfile import check_keys
 
+from shearCase import RUNS, read_settings
 from shearTheory import RHO_P
 
 HERE = Path(__file__).resolve().parent
-
-RUNS = ("detect", "EAM", "MAM", "bounce")
 
 # ---------------------------------------------------------------- settings
 
@@ -166,19 +165,6 @@ def settings_text(s):
             lines.append(f"{k:<20}{v!r};" if isinstance(v, float)
                          else f"{k:<20}{v};")
     return "\n".join(lines)
-
-
-SETTINGS_KEYS = {"preset", "run", "gammaDot", "delta", "yMin", "uWall",
-                 "uLower", "Lx", "Lz", "nx", "ny", "nz", "nParticles",
-                 "dParticle", "seed", "deltaT", "endTime", "writeInterval",
-                 "countFrom", "agglomerationModel", "collisionResponse",
-                 "eventLog", "rotationModel", "overlapTreatment",
-                 "kernelCoeffs"}
-
-
-def read_settings(case):
-    """The caseSettings of a run, every entry checked."""
-    return casesettings.read_settings(case, SETTINGS_KEYS)
 
 
 # -------------------------------------------------------------------- init

@@ -16,8 +16,10 @@ import numpy as np
 from aggloTools import cloud, regression as reg, render, stats, times
 
 import shearStatements
-from shearFlow import HERE, RUNS, read_settings
+from shearCase import RUNS, read_settings
 from shearTheory import alpha_th, decay_theory, kernel_ST
+
+HERE = Path(__file__).resolve().parent
 
 
 class Run:

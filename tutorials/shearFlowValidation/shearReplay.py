@@ -20,7 +20,7 @@ from pathlib import Path
 from aggloTools import eventlog, regression as reg
 from aggloTools.eventlog import BASE, EN_SCAN as EN
 
-import shearFlow
+import shearCase
 import shearTheory
 
 HERE = Path(__file__).resolve().parent
@@ -30,12 +30,12 @@ MODELS = ("EAM", "MAM")
 def replay(preset, runs_dir=None, out_dir=None):
     runs_dir = Path(runs_dir or HERE / "runs" / preset)
     out = Path(out_dir or HERE / "results" / preset)
-    logs = [r for r in shearFlow.RUNS
+    logs = [r for r in shearCase.RUNS
             if eventlog.folder(runs_dir / r).is_dir()]
     if not logs:
         print(f"shearReplay.py: no collision event logs under {runs_dir}")
         return None
-    s = shearFlow.read_settings(runs_dir / logs[0])
+    s = shearCase.read_settings(runs_dir / logs[0])
     a_th = float(shearTheory.alpha_th(float(s["dParticle"]),
                                     float(s["gammaDot"])))
     out.mkdir(parents=True, exist_ok=True)
