@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
     Unit tests of the statistics' profiles (hardSphereProfiles) on a 1 mm
-    box of 5^3 cells built in the test:
+    box of 5^3 cells with walls built in the test (testMeshes.H):
     - slabs: a position's slab along the direction (the upper bound in the
       last slab, outside -1); slab volumes sum to the box and, with slabs
       thinner than the cells, each cell is split by overlap (every slab
@@ -15,7 +15,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "hardSphereProfiles.H"
-#include "blockMesh.H"
+#include "testMeshes.H"
 #include "Time.H"
 #include "IStringStream.H"
 #include "OSspecific.H"
@@ -28,49 +28,6 @@ using namespace Foam;
 
 namespace
 {
-
-autoPtr<polyMesh> boxMesh(const Time& runTime)
-{
-    const std::string text
-    (
-        "scale 1e-3;"
-        " vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0)"
-        " (0 0 1) (1 0 1) (1 1 1) (0 1 1));"
-        " blocks (hex (0 1 2 3 4 5 6 7) (5 5 5) simpleGrading (1 1 1));"
-        " boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5)"
-        " (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); } );"
-    );
-    IStringStream is(text);
-    const IOdictionary dict
-    (
-        IOobject
-        (
-            "blockMeshDict", runTime.system(), runTime,
-            IOobject::NO_READ, IOobject::NO_WRITE, false
-        ),
-        dictionary(is)
-    );
-    blockMesh blocks(dict, polyMesh::defaultRegion);
-    blocks.verbose(false);
-    return autoPtr<polyMesh>
-    (
-        new polyMesh
-        (
-            IOobject
-            (
-                polyMesh::defaultRegion, runTime.constant(), runTime,
-                IOobject::NO_READ, IOobject::NO_WRITE, false
-            ),
-            pointField(blocks.points()),
-            blocks.cells(),
-            blocks.patches(),
-            blocks.patchNames(),
-            blocks.patchDicts(),
-            "defaultFaces",
-            "empty"
-        )
-    );
-}
 
 dictionary settings(const std::string& text)
 {
@@ -127,7 +84,7 @@ fileName scratch(const word& name)
 TEST(hardSphereProfiles, slabs)
 {
     autoPtr<Time> runTime(Time::New());
-    autoPtr<polyMesh> mesh(boxMesh(runTime()));
+    autoPtr<polyMesh> mesh(aggloTest::boxMesh(runTime(), false));
 
     hardSphereProfiles p
     (
@@ -156,7 +113,7 @@ TEST(hardSphereProfiles, slabs)
 TEST(hardSphereProfiles, runningAverages)
 {
     autoPtr<Time> runTime(Time::New());
-    autoPtr<polyMesh> mesh(boxMesh(runTime()));
+    autoPtr<polyMesh> mesh(aggloTest::boxMesh(runTime(), false));
     hardSphereProfiles p(mesh(), settings("direction (0 1 0); nBins 2;"));
 
     // Velocity samples in slab 0 (slab 1 stays empty), two batches
@@ -247,7 +204,7 @@ TEST(hardSphereProfiles, runningAverages)
 TEST(hardSphereProfiles, badInput)
 {
     autoPtr<Time> runTime(Time::New());
-    autoPtr<polyMesh> mesh(boxMesh(runTime()));
+    autoPtr<polyMesh> mesh(aggloTest::boxMesh(runTime(), false));
     const std::string zero
     (
         message

@@ -15,7 +15,7 @@
 #include "ParticleGridPairSearch.H"
 #include "BruteForcePairSearch.H"
 #include "basicAgglomerateParcel.H"
-#include "blockMesh.H"
+#include "testMeshes.H"
 #include "Time.H"
 #include "fvMesh.H"
 #include "volFields.H"
@@ -27,6 +27,7 @@
 #include <tuple>
 
 using namespace Foam;
+using aggloTest::boxMesh;
 
 namespace
 {
@@ -46,58 +47,6 @@ pairKey key(const label i, const label j, const point& xj)
         std::lround(xj.z()*1e12)
     );
 }
-
-//- A 1 mm box of n^3 cells; cyclic in x and z or all walls
-autoPtr<polyMesh> boxMesh(const Time& runTime, const bool periodic)
-{
-    const std::string cyc(periodic ? "cyclic" : "wall");
-    const std::string text
-    (
-        "scale 1e-3;"
-        " vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0)"
-        " (0 0 1) (1 0 1) (1 1 1) (0 1 1));"
-        " blocks (hex (0 1 2 3 4 5 6 7) (5 5 5) simpleGrading (1 1 1));"
-        " boundary ("
-        " xMin { type " + cyc + "; neighbourPatch xMax; faces ((0 4 7 3)); }"
-        " xMax { type " + cyc + "; neighbourPatch xMin; faces ((1 2 6 5)); }"
-        " yMin { type wall; faces ((0 1 5 4)); }"
-        " yMax { type wall; faces ((3 7 6 2)); }"
-        " zMin { type " + cyc + "; neighbourPatch zMax; faces ((0 3 2 1)); }"
-        " zMax { type " + cyc + "; neighbourPatch zMin; faces ((4 5 6 7)); }"
-        " );"
-    );
-    IStringStream is(text);
-    const IOdictionary dict
-    (
-        IOobject
-        (
-            "blockMeshDict", runTime.system(), runTime,
-            IOobject::NO_READ, IOobject::NO_WRITE, false
-        ),
-        dictionary(is)
-    );
-    blockMesh blocks(dict, polyMesh::defaultRegion);
-    blocks.verbose(false);
-    return autoPtr<polyMesh>
-    (
-        new polyMesh
-        (
-            IOobject
-            (
-                polyMesh::defaultRegion, runTime.constant(), runTime,
-                IOobject::NO_READ, IOobject::NO_WRITE, false
-            ),
-            pointField(blocks.points()),
-            blocks.cells(),
-            blocks.patches(),
-            blocks.patchNames(),
-            blocks.patchDicts(),
-            "defaultFaces",
-            "empty"
-        )
-    );
-}
-
 
 //- The box as an fvMesh with a velocity field U (the interactionLists
 //  search refers wall data with it)
