@@ -18,11 +18,13 @@
 #include "TrackedParcels.H"
 #include "hardSphereStep.H"
 #include "Time.H"
+#include "testHelpers.H"
 #include <gtest/gtest.h>
 #include <functional>
 #include <list>
 
 using namespace Foam;
+using aggloTest::errorMessage;
 
 namespace
 {
@@ -67,19 +69,6 @@ struct testCloud
     }
 };
 
-std::string message(const std::function<void()>& f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& err)
-    {
-        return std::string(err.message());
-    }
-    return "";
-}
-
 } // End anonymous namespace
 
 
@@ -115,7 +104,7 @@ TEST(trackedParcels, checkAndExtent)
     cloud.parcels.emplace_back();
     const std::string missing
     (
-        message([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
+        errorMessage([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
     );
     EXPECT_NE(missing.find("3 tracks"), std::string::npos) << missing;
     EXPECT_NE(missing.find("4 parcels"), std::string::npos) << missing;
@@ -125,7 +114,7 @@ TEST(trackedParcels, checkAndExtent)
     b.n_ = 2;
     const std::string two
     (
-        message([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
+        errorMessage([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
     );
     EXPECT_NE(two.find("nParticle = 2"), std::string::npos) << two;
 }
@@ -146,12 +135,12 @@ TEST(trackedParcels, positionsAndFinish)
     tracked.append(a, a.x + vector(1e-15, 0, 0));      // round-off
     tracked.append(b, b.x);
     tracked.append(c, c.x);
-    EXPECT_EQ(message([&]{ tracked.checkPositions(L, "c"); }), "");
+    EXPECT_EQ(errorMessage([&]{ tracked.checkPositions(L, "c"); }), "");
 
     tracked.reset(3);
     tracked.append(a, a.x + vector(0, 2e-12*L, 0));     // beyond
     tracked.append(b, b.x);
-    const std::string off(message([&]{ tracked.checkPositions(L, "c"); }));
+    const std::string off(errorMessage([&]{ tracked.checkPositions(L, "c"); }));
     EXPECT_NE(off.find("round-off"), std::string::npos) << off;
 
     tracked.reset(3);
@@ -174,7 +163,7 @@ TEST(hardSphereStep, massAudit)
     hardSphereStep step(runTime());
 
     // The stage did not run: nothing to audit
-    EXPECT_EQ(message([&]{ step.audit(1, 1, true); }), "");
+    EXPECT_EQ(errorMessage([&]{ step.audit(1, 1, true); }), "");
 
     testCloud cloud;
     cloud.parcels.resize(3);
@@ -187,23 +176,23 @@ TEST(hardSphereStep, massAudit)
     EXPECT_NEAR(step.mass0, 6e-12, 1e-27);
     EXPECT_EQ(step.nPrimaries0, 6);
 
-    EXPECT_EQ(message([&]{ step.audit(6e-12*(1 + 5e-12), 6, true); }), "");
+    EXPECT_EQ(errorMessage([&]{ step.audit(6e-12*(1 + 5e-12), 6, true); }), "");
 
     const std::string mass
     (
-        message([&]{ step.audit(6e-12*(1 + 2e-11), 6, true); })
+        errorMessage([&]{ step.audit(6e-12*(1 + 2e-11), 6, true); })
     );
     EXPECT_NE(mass.find("not conserved"), std::string::npos) << mass;
 
     const std::string primaries
     (
-        message([&]{ step.audit(6e-12, 5, true); })
+        errorMessage([&]{ step.audit(6e-12, 5, true); })
     );
     EXPECT_NE(primaries.find("primaries 6 -> 5"), std::string::npos)
         << primaries;
 
     // Without debug a warning, no error
-    EXPECT_EQ(message([&]{ step.audit(6e-12, 5, false); }), "");
+    EXPECT_EQ(errorMessage([&]{ step.audit(6e-12, 5, false); }), "");
 
     // The record is in the registry under its type name
     EXPECT_TRUE(runTime().foundObject<hardSphereStep>("hardSphereStep"));

@@ -19,12 +19,14 @@
 #include "Time.H"
 #include "IStringStream.H"
 #include "OSspecific.H"
+#include "testHelpers.H"
 #include <gtest/gtest.h>
 #include <fstream>
 #include <functional>
 #include <sstream>
 
 using namespace Foam;
+using aggloTest::errorMessage;
 
 namespace
 {
@@ -33,19 +35,6 @@ dictionary settings(const std::string& text)
 {
     IStringStream is(text);
     return dictionary(is);
-}
-
-std::string message(const std::function<void()>& f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& err)
-    {
-        return std::string(err.message());
-    }
-    return "";
 }
 
 //- The rows of a profiles file (comments skipped)
@@ -196,7 +185,7 @@ TEST(hardSphereProfiles, runningAverages)
     (
         mesh(), settings("direction (0 1 0); nBins 3;")
     );
-    const std::string bins(message([&]{ other.read(p.state()); }));
+    const std::string bins(errorMessage([&]{ other.read(p.state()); }));
     EXPECT_NE(bins.find("keep nBins"), std::string::npos) << bins;
 }
 
@@ -207,7 +196,7 @@ TEST(hardSphereProfiles, badInput)
     autoPtr<polyMesh> mesh(aggloTest::boxMesh(runTime(), false));
     const std::string zero
     (
-        message
+        errorMessage
         ([&]{
             hardSphereProfiles bad
             (
@@ -218,7 +207,7 @@ TEST(hardSphereProfiles, badInput)
     EXPECT_NE(zero.find("direction"), std::string::npos) << zero;
     const std::string bins
     (
-        message
+        errorMessage
         ([&]{
             hardSphereProfiles bad
             (

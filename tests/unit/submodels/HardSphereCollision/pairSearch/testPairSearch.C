@@ -93,9 +93,12 @@ struct fvBox
 };
 
 
-//- A random cloud: n particles of 20-60 um, start positions in the box
-//  (away from the walls by a radius), displacements up to 'move' per
-//  component; the parcels own themselves (deleted by the caller)
+//- A random cloud: n particles of 20-60 um in the box (away from the walls
+//  by a radius), displaced by up to 'move' per component over the step;
+//  the parcels sit at their start positions, or (atEnd) at their end
+//  positions x1 as the collision stage sees them, the start positions
+//  then outside the box after a cyclic crossing; the parcels own
+//  themselves (deleted by the caller)
 void randomCloud
 (
     const polyMesh& mesh,
@@ -103,7 +106,8 @@ void randomCloud
     const scalar move,
     const unsigned seed,
     List<basicAgglomerateParcel*>& parcels,
-    List<point>& x1
+    List<point>& x1,
+    const bool atEnd = false
 )
 {
     std::mt19937 gen(seed);
@@ -113,49 +117,27 @@ void randomCloud
     for (label i = 0; i < n; ++i)
     {
         const scalar d = 20e-6 + 40e-6*u(gen);
-        const point x0
+        const point x
         (
             1e-3*u(gen), 0.5*d + (1e-3 - d)*u(gen), 1e-3*u(gen)
         );
         basicAgglomerateParcel* p =
-            new basicAgglomerateParcel(mesh, x0, mesh.findCell(x0));
+            new basicAgglomerateParcel(mesh, x, mesh.findCell(x));
         p->d() = d;
         parcels[i] = p;
-        x1[i] =
-            x0 + move*vector(2*u(gen) - 1, 2*u(gen) - 1, 2*u(gen) - 1);
-    }
-}
-
-
-//- A random cloud as the collision stage sees it: the particles at their
-//  end positions x1, in the box, the start positions displaced by up to
-//  'move' per component (outside the box after a cyclic crossing)
-void endCloud
-(
-    const polyMesh& mesh,
-    const label n,
-    const scalar move,
-    const unsigned seed,
-    List<basicAgglomerateParcel*>& parcels,
-    List<point>& x1
-)
-{
-    std::mt19937 gen(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    parcels.setSize(n);
-    x1.setSize(n);
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar d = 20e-6 + 40e-6*u(gen);
-        x1[i] = point(1e-3*u(gen), 0.5*d + (1e-3 - d)*u(gen), 1e-3*u(gen));
-        basicAgglomerateParcel* p =
-            new basicAgglomerateParcel(mesh, x1[i], mesh.findCell(x1[i]));
-        p->d() = d;
-        p->setKnownPosition
+        const vector dx
         (
-            x1[i] - move*vector(2*u(gen) - 1, 2*u(gen) - 1, 2*u(gen) - 1)
+            move*vector(2*u(gen) - 1, 2*u(gen) - 1, 2*u(gen) - 1)
         );
-        parcels[i] = p;
+        if (atEnd)
+        {
+            x1[i] = x;
+            p->setKnownPosition(x - dx);
+        }
+        else
+        {
+            x1[i] = x + dx;
+        }
     }
 }
 
@@ -329,10 +311,10 @@ TEST(pairSearch, interactionListsCoversOracle)
             const polyMesh* meshPtr;
         } f;
         f.meshPtr = &box.mesh();
-        endCloud
+        randomCloud
         (
             box.mesh(), periodic ? 400 : 300, move,
-            7u + (periodic ? 400 : 300), f.parcels, f.x1
+            7u + (periodic ? 400 : 300), f.parcels, f.x1, true
         );
         // Selected at run time: the library's instantiation
         IStringStream is("pairSearch interactionLists;");
