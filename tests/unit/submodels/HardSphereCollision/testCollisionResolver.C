@@ -20,6 +20,7 @@
 
 #include "PhysicalCollisionResolver.H"
 #include "GhostCollisionResolver.H"
+#include "hardSphereParcelStage.H"
 #include "testHelpers.H"
 #include <gtest/gtest.h>
 
@@ -34,15 +35,12 @@ class testParcel
 {
 public:
 
-    enum statusFlag { COLLIDED = 1, RELOCATE = 2, REMOVE = 4, FORMED = 8 };
-
     vector U_ = Zero, omega_ = Zero;
     scalar d_ = 12e-6, rho_ = 2200;
     label nPrimary_ = 1;
     label lastProc_ = -1, lastId_ = -1;
     scalar lastTime_ = -GREAT;
-    point target_ = Zero;
-    label status_ = 0;
+    hardSphereParcelStage stage_;
 
     vector& U() { return U_; }
     vector& omega() { return omega_; }
@@ -53,14 +51,8 @@ public:
     label& lastPartnerId() { return lastId_; }
     scalar& lastContactTime() { return lastTime_; }
 
-    bool collided() const { return status_ & COLLIDED; }
-    bool relocating() const { return status_ & RELOCATE; }
-    bool removed() const { return status_ & REMOVE; }
-    bool formed() const { return status_ & FORMED; }
-    void markCollided() { status_ |= COLLIDED; }
-    void markRemoved() { status_ |= REMOVE; }
-    void markFormed() { status_ |= FORMED; }
-    void relocateTo(const point& x) { target_ = x; status_ |= RELOCATE; }
+    hardSphereParcelStage& stage() { return stage_; }
+    const hardSphereParcelStage& stage() const { return stage_; }
 
     hardSphereState state(const point& x) const
     {
@@ -198,7 +190,7 @@ TEST(collisionResolver, physicalRebound)
         EXPECT_EQ(labelPair(a.lastProc_, a.lastId_), idb);
         EXPECT_EQ(labelPair(b.lastProc_, b.lastId_), ida);
         EXPECT_EQ(a.lastTime_, 2.5);
-        EXPECT_FALSE(a.relocating() || b.relocating());
+        EXPECT_FALSE(a.stage().relocating() || b.stage().relocating());
         EXPECT_TRUE(r->duplicate(pi, ida, idb));
     }
 }
@@ -223,10 +215,11 @@ TEST(collisionResolver, physicalAgglomeration)
     r->resolve(ev, b, &a, false, xb1, xa1, 1e-5);
 
     ASSERT_TRUE(ev.outcome.agglomerates);
-    EXPECT_TRUE(b.removed());
-    EXPECT_FALSE(a.removed());
-    EXPECT_TRUE(a.formed() && a.relocating());
-    EXPECT_LT(mag(a.target_ - (ma*xa1 + mb*xb1)/(ma + mb)), 1e-18);
+    EXPECT_TRUE(b.stage().removed());
+    EXPECT_FALSE(a.stage().removed());
+    EXPECT_TRUE(a.stage().formed() && a.stage().relocating());
+    const point& xAg = a.stage().relocationTarget();
+    EXPECT_LT(mag(xAg - (ma*xa1 + mb*xb1)/(ma + mb)), 1e-18);
     EXPECT_EQ(a.nPrimary_, 2);
     EXPECT_TRUE(near(a.state(xa).mass(), ma + mb, 1e-12));
     EXPECT_EQ(a.lastId_, -1);
@@ -250,13 +243,15 @@ TEST(collisionResolver, overlapSeparate)
     ev.set({0, 1}, a.state(xa), {0, 2}, b.state(xb), true, 0, 0.5, 0, 0);
     r->resolve(ev, a, &b, true, xa, xa, 1e-5);
 
-    ASSERT_TRUE(a.relocating() && b.relocating());
+    ASSERT_TRUE(a.stage().relocating() && b.stage().relocating());
     // After the contact the partners separate: from contact, with the new
     // velocities over the rest of the step
     const scalar rest = 0.5e-5;
-    EXPECT_LT(mag(a.target_ - (xa + rest*a.U_)), 1e-18);
-    EXPECT_LT(mag(b.target_ - (xb + rest*b.U_)), 1e-18);
-    EXPECT_GE(mag(b.target_ - a.target_), 12e-6*(1 - 1e-12));
+    const point& xa2 = a.stage().relocationTarget();
+    const point& xb2 = b.stage().relocationTarget();
+    EXPECT_LT(mag(xa2 - (xa + rest*a.U_)), 1e-18);
+    EXPECT_LT(mag(xb2 - (xb + rest*b.U_)), 1e-18);
+    EXPECT_GE(mag(xb2 - xa2), 12e-6*(1 - 1e-12));
 }
 
 
@@ -286,7 +281,7 @@ TEST(collisionResolver, ghost)
     EXPECT_EQ(ev.outcomePtr(), nullptr);
     EXPECT_EQ(a.U_, Ua);
     EXPECT_EQ(b.U_, Ub);
-    EXPECT_FALSE(a.collided() || b.collided());
+    EXPECT_FALSE(a.stage().collided() || b.stage().collided());
     EXPECT_EQ(labelPair(a.lastProc_, a.lastId_), idb);
     EXPECT_EQ(labelPair(b.lastProc_, b.lastId_), ida);
     EXPECT_EQ(b.lastTime_, 7);

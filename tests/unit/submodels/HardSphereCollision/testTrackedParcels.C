@@ -17,6 +17,7 @@
 
 #include "TrackedParcels.H"
 #include "hardSphereStep.H"
+#include "hardSphereParcelStage.H"
 #include "Time.H"
 #include "testHelpers.H"
 #include <gtest/gtest.h>
@@ -32,25 +33,20 @@ namespace
 //- The parcel interface TrackedParcels and the audit use
 struct testParcel
 {
-    point x0 = Zero;            // start position
     point x = Zero;             // the particle's position
     scalar d_ = 10e-6;
     scalar n_ = 1;
     scalar mass_ = 1e-12;
     label nPrimary_ = 1;
-    bool relocating_ = false, removed_ = false;
-    bool known_ = false;
-    point knownX = Zero;
+    hardSphereParcelStage stage_;
 
     scalar d() const { return d_; }
     scalar nParticle() const { return n_; }
     scalar mass() const { return mass_; }
     label nPrimary() const { return nPrimary_; }
-    const point& startPosition() const { return x0; }
     point position() const { return x; }
-    bool relocating() const { return relocating_; }
-    bool removed() const { return removed_; }
-    void setKnownPosition(const point& p) { known_ = true; knownX = p; }
+    hardSphereParcelStage& stage() { return stage_; }
+    const hardSphereParcelStage& stage() const { return stage_; }
 };
 
 //- The cloud interface: a name, a size and its parcels
@@ -82,8 +78,8 @@ TEST(trackedParcels, checkAndExtent)
     testParcel& c = *it;
     b.d_ = 30e-6;
     c.d_ = 20e-6;
-    b.x0 = point(1, 1, 1);
-    c.x0 = point(0, 0, 1);
+    b.stage_.reset(point(1, 1, 1));
+    c.stage_.reset(point(0, 0, 1));
 
     TrackedParcels<testParcel> tracked;
     tracked.reset(3);
@@ -126,8 +122,8 @@ TEST(trackedParcels, positionsAndFinish)
     a.x = point(1e-3, 0, 0);
     b.x = point(0, 2e-3, 0);
     c.x = point(0, 0, 3e-3);
-    b.relocating_ = true;
-    c.removed_ = true;
+    b.stage_.relocateTo(point(-1, -1, -1));
+    c.stage_.markRemoved();
 
     TrackedParcels<testParcel> tracked;
     tracked.reset(3);
@@ -148,10 +144,11 @@ TEST(trackedParcels, positionsAndFinish)
     tracked.append(b, point(7, 8, 9));
     tracked.append(c, point(1, 2, 3));
     tracked.finish();
-    EXPECT_TRUE(a.known_);
-    EXPECT_EQ(a.knownX, point(4, 5, 6));
-    EXPECT_FALSE(b.known_);
-    EXPECT_FALSE(c.known_);
+    EXPECT_TRUE(a.stage_.positionKnown());
+    EXPECT_EQ(a.stage_.knownPosition(), point(4, 5, 6));
+    EXPECT_FALSE(b.stage_.positionKnown());
+    EXPECT_EQ(b.stage_.relocationTarget(), point(-1, -1, -1));
+    EXPECT_FALSE(c.stage_.positionKnown());
     EXPECT_EQ(tracked.parcels().size(), 0);
     EXPECT_EQ(tracked.x1().size(), 0);
 }

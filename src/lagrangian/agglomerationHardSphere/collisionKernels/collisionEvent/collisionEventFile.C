@@ -60,6 +60,8 @@ bool finiteVector(const Foam::vector& v)
 //  (empty if it can be one)
 std::string invalidRecord(const Foam::collisionEvent& e)
 {
+    const int nBranches = Foam::collisionOutcome::branchTypeNames.size();
+
     std::ostringstream os;
     if (e.timeIndex < 0)
     {
@@ -73,11 +75,11 @@ std::string invalidRecord(const Foam::collisionEvent& e)
     else if
     (
         e.branch != Foam::collisionEvent::ghostBranch
-     && (e.branch < 0 || e.branch >= Foam::collisionOutcome::nBranches)
+     && (e.branch < 0 || e.branch >= nBranches)
     )
     {
         os << "branch " << e.branch << " (valid: 0-"
-           << Foam::collisionOutcome::nBranches - 1 << ", "
+           << nBranches - 1 << ", "
            << Foam::collisionEvent::ghostBranch << " ghost)";
     }
     else if (e.type < 0 || e.type > 1)

@@ -132,7 +132,7 @@ void randomCloud
         if (atEnd)
         {
             x1[i] = x;
-            p->setKnownPosition(x - dx);
+            p->stage().setKnownPosition(x - dx);
         }
         else
         {
@@ -192,7 +192,7 @@ std::set<pairKey> handOracle
     const label n = parcels.size();
     auto box = [&](const label i, const vector& s)
     {
-        const point& a = parcels[i]->startPosition();
+        const point& a = parcels[i]->stage().startPosition();
         const scalar h = 0.55*parcels[i]->d();
         const vector hv(h, h, h);
         return boundBox(min(a, x1[i]) - hv + s, max(a, x1[i]) + hv + s);
@@ -331,8 +331,8 @@ TEST(pairSearch, interactionListsCoversOracle)
         forAll(f.parcels, i)
         {
             dMax = max(dMax, f.parcels[i]->d());
-            dxMax =
-                max(dxMax, mag(f.x1[i] - f.parcels[i]->startPosition()));
+            const point& x0 = f.parcels[i]->stage().startPosition();
+            dxMax = max(dxMax, mag(f.x1[i] - x0));
         }
         const scalar distance = 1.1*dMax + 2*dxMax;
 

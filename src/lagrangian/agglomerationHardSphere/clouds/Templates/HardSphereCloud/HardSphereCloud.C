@@ -223,7 +223,7 @@ void Foam::HardSphereCloud<CloudType>::motion
     // stage where known (position() is expensive), else computed
     for (parcelType& p : *this)
     {
-        p.startStep();
+        p.stage().startStep(p);
     }
     collisionModel_->resetStep();
 
@@ -241,7 +241,7 @@ void Foam::HardSphereCloud<CloudType>::motion
         // Mark-then-delete
         for (parcelType& p : *this)
         {
-            if (p.removed())
+            if (p.stage().removed())
             {
                 this->deleteParticle(p);
             }
@@ -252,7 +252,7 @@ void Foam::HardSphereCloud<CloudType>::motion
         bool relocate = false;
         for (const parcelType& p : *this)
         {
-            if (p.relocating())
+            if (p.stage().relocating())
             {
                 relocate = true;
                 break;
@@ -284,7 +284,7 @@ void Foam::HardSphereCloud<CloudType>::motion
     {
         for (parcelType& p : *this)
         {
-            p.forgetPosition();
+            p.stage().forgetPosition();
         }
         if (cellOrder_.interval() > 0)
         {

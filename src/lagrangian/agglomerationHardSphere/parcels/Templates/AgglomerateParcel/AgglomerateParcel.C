@@ -53,12 +53,11 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
 :
     ParcelType(p),
     omega_(p.omega_),
-    position0_(p.position0_),
     lastContactTime_(p.lastContactTime_),
     nPrimary_(p.nPrimary_),
     lastPartnerProc_(p.lastPartnerProc_),
     lastPartnerId_(p.lastPartnerId_),
-    status_(p.status_)
+    stage_(p.stage_)
 {}
 
 
@@ -71,12 +70,11 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
 :
     ParcelType(p, mesh),
     omega_(p.omega_),
-    position0_(p.position0_),
     lastContactTime_(p.lastContactTime_),
     nPrimary_(p.nPrimary_),
     lastPartnerProc_(p.lastPartnerProc_),
     lastPartnerId_(p.lastPartnerId_),
-    status_(p.status_)
+    stage_(p.stage_)
 {}
 
 
@@ -152,7 +150,7 @@ bool Foam::AgglomerateParcel<ParcelType>::move
         {
             td.keepParticle = true;
 
-            if (!hasStatus(RELOCATE))
+            if (!stage_.relocating())
             {
                 p.stepFraction() = 1;
                 break;
@@ -167,14 +165,14 @@ bool Foam::AgglomerateParcel<ParcelType>::move
             )
             {
                 const scalar f = 1 - p.stepFraction();
-                const vector s = (position0_ - p.position())/f;
+                const vector s = (stage_.relocationTarget() - p.position())/f;
 
                 p.trackToAndHitFace(f*s, f, cloud, td);
             }
 
             if (!td.switchProcessor)
             {
-                status_ &= ~RELOCATE;
+                stage_.relocated();
             }
             break;
         }
@@ -209,7 +207,7 @@ bool Foam::AgglomerateParcel<ParcelType>::trackLinear
 
     // The position: the start of the step, or, continuing after a
     // processor transfer, computed once
-    point x(p.stepFraction() > 0 ? p.position() : position0_);
+    point x(p.stepFraction() > 0 ? p.position() : stage_.startPosition());
 
     const cloudSolution& solution = cloud.solution();
     const scalarField& cellLengthScale = cloud.cellLengthScale();
@@ -270,18 +268,18 @@ bool Foam::AgglomerateParcel<ParcelType>::trackLinear
 
         if (p.active() && p.onFace() && ttd.keepParticle)
         {
-            // A cyclic patch moves position0 with the parcel: x moves
-            // with it (a translation), or is computed again (a rotation)
-            const point x0(position0_);
+            // A cyclic patch moves the start position with the parcel: x
+            // moves with it (a translation), or is computed again (a
+            // rotation)
+            const point x0(stage_.startPosition());
             p.hitFace(s, cloud, ttd);
-            if (hasStatus(ROTATED))
+            if (stage_.takeRotated())
             {
-                status_ &= ~ROTATED;
                 x = p.position();
             }
             else
             {
-                x += position0_ - x0;
+                x += stage_.startPosition() - x0;
             }
         }
     }
@@ -356,8 +354,7 @@ void Foam::AgglomerateParcel<ParcelType>::transformProperties
     ParcelType::transformProperties(T);
 
     omega_ = transform(T, omega_);
-    position0_ = transform(T, position0_);
-    setStatus(ROTATED);
+    stage_.transform(T);
 }
 
 
@@ -370,7 +367,7 @@ void Foam::AgglomerateParcel<ParcelType>::transformProperties
     ParcelType::transformProperties(separation);
 
     // A position moves with the parcel; omega is translation invariant
-    position0_ += separation;
+    stage_.translate(separation);
 }
 
 

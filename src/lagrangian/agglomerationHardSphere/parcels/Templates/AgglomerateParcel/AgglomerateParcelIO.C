@@ -58,19 +58,18 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
 :
     ParcelType(mesh, is, readFields, newFormat),
     omega_(Zero),
-    position0_(Zero),
     lastContactTime_(-GREAT),
     nPrimary_(1),
     lastPartnerProc_(-1),
     lastPartnerId_(-1),
-    status_(0)
+    stage_()
 {
     if (readFields)
     {
         if (is.format() == IOstream::ASCII)
         {
-            is  >> omega_ >> position0_ >> lastContactTime_ >> nPrimary_
-                >> lastPartnerProc_ >> lastPartnerId_ >> status_;
+            is  >> omega_ >> lastContactTime_ >> nPrimary_
+                >> lastPartnerProc_ >> lastPartnerId_ >> stage_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
@@ -79,12 +78,11 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
             is.beginRawRead();
 
             readRawScalar(is, omega_.data(), vector::nComponents);
-            readRawScalar(is, position0_.data(), vector::nComponents);
             readRawScalar(is, &lastContactTime_);
             readRawLabel(is, &nPrimary_);
             readRawLabel(is, &lastPartnerProc_);
             readRawLabel(is, &lastPartnerId_);
-            readRawLabel(is, &status_);
+            stage_.readRaw(is);
 
             is.endRawRead();
         }
@@ -96,7 +94,7 @@ Foam::AgglomerateParcel<ParcelType>::AgglomerateParcel
     else
     {
         // Fields come from the separate field files (readFields)
-        position0_ = this->position();
+        stage_.reset(this->position());
     }
 
     is.check(FUNCTION_NAME);
@@ -185,8 +183,7 @@ void Foam::AgglomerateParcel<ParcelType>::readFields(CloudType& c)
         p.lastPartnerProc_ = lastProc().size() ? lastProc()[i] : -1;
         p.lastPartnerId_ = lastId().size() ? lastId()[i] : -1;
         p.lastContactTime_ = lastTime().size() ? lastTime()[i] : -GREAT;
-        p.position0_ = p.position();
-        p.status_ = 0;
+        p.stage_.reset(p.position());
 
         // Particle fields, checked when read
         using agglomerateParcelIO::checkValue;
@@ -365,12 +362,11 @@ Foam::Ostream& Foam::operator<<
     {
         os  << static_cast<const ParcelType&>(p)
             << token::SPACE << p.omega()
-            << token::SPACE << p.position0_
             << token::SPACE << p.lastContactTime()
             << token::SPACE << p.nPrimary()
             << token::SPACE << p.lastPartner().first()
             << token::SPACE << p.lastPartner().second()
-            << token::SPACE << p.status_;
+            << token::SPACE << p.stage_;
     }
     else
     {

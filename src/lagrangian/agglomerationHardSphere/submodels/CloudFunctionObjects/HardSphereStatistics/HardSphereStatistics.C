@@ -150,8 +150,8 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
             // The position of the collision stage where known
             const label b = profiles->bin
             (
-                p.positionKnown()
-              ? p.knownPosition() : p.position()
+                p.stage().positionKnown()
+              ? p.stage().knownPosition() : p.position()
             );
             if (b >= 0)
             {

@@ -119,7 +119,7 @@ void Foam::HardSphereCollision<CloudType>::resolveEvents
         {
             return hardSphereState
             (
-                p.startPosition() + s*(x1p - p.startPosition()),
+                p.stage().startPosition() + s*(x1p - p.stage().startPosition()),
                 p.U(), p.omega(), p.d(), p.rho(), p.nPrimary()
             );
         };

@@ -59,8 +59,10 @@ void Foam::CollisionCandidates<ParcelType>::find
         const ParcelType& pj = jReal ? *parcels[j] : search.referred(j - n);
         const point& xj1 = jReal ? x1[j] : search.referredPosition(j - n);
 
-        const vector dxi(x1[i] - pi.startPosition());
-        const vector dxj(xj1 - pj.startPosition());
+        const point& xi0 = pi.stage().startPosition();
+        const point& xj0 = pj.stage().startPosition();
+        const vector dxi(x1[i] - xi0);
+        const vector dxj(xj1 - xj0);
         const scalar R = 0.5*(pi.d() + pj.d());
 
         const encounterMemory::memory mi
@@ -86,7 +88,7 @@ void Foam::CollisionCandidates<ParcelType>::find
             }
         }
 
-        if (!pc.find(pi.startPosition(), dxi, pj.startPosition(), dxj, R))
+        if (!pc.find(xi0, dxi, xj0, dxj, R))
         {
             return;
         }
@@ -103,7 +105,7 @@ void Foam::CollisionCandidates<ParcelType>::find
 
         const vector xij
         (
-            (pj.startPosition() + pc.s*dxj) - (pi.startPosition() + pc.s*dxi)
+            (xj0 + pc.s*dxj) - (xi0 + pc.s*dxi)
         );
         const scalar mxij = mag(xij);
         const bool separating =

@@ -61,7 +61,7 @@ bool Foam::hardSphereWallInteraction::contactAtRadius
 
     if (moved)
     {
-        p.relocateTo(xNew);
+        p.stage().relocateTo(xNew);
     }
     return result == IMPACT;
 }
@@ -89,15 +89,15 @@ Foam::label Foam::hardSphereWallInteraction::contactsAtRadius
     {
         ParcelType& p = *parcels[i];
 
-        if (p.removed() || p.formed())
+        if (p.stage().removed() || p.stage().formed())
         {
             continue;
         }
 
         // Relocated by an event: from the relocation target
-        if (p.relocating())
+        if (p.stage().relocating())
         {
-            x1[i] = p.relocationTarget();
+            x1[i] = p.stage().relocationTarget();
         }
 
         nImpacts += contactAtRadius(p, x1[i], search, dt);
@@ -121,11 +121,12 @@ Foam::label Foam::hardSphereWallInteraction::contactsOfFormed
     relocate = false;
     for (parcelType& p : cloud)
     {
-        if (p.formed())
+        if (p.stage().formed())
         {
-            // At the relocation target: position0 (exact)
-            nImpacts += contactAtRadius(p, p.relocationTarget(), search, dt);
-            relocate = relocate || p.relocating();
+            // At the relocation target (exact)
+            nImpacts +=
+                contactAtRadius(p, p.stage().relocationTarget(), search, dt);
+            relocate = relocate || p.stage().relocating();
         }
     }
     return nImpacts;

@@ -77,7 +77,7 @@ void Foam::TrackedParcels<ParcelType>::check
         }
 
         dMax = max(dMax, p.d());
-        const vector dx(x1_[i] - p.startPosition());
+        const vector dx(x1_[i] - p.stage().startPosition());
         dxMag = max(dxMag, mag(dx));
         dxMax = max(dxMax, cmptMag(dx));
     }
@@ -118,9 +118,9 @@ void Foam::TrackedParcels<ParcelType>::finish()
     forAll(parcels_, i)
     {
         ParcelType& p = *parcels_[i];
-        if (!p.relocating() && !p.removed())
+        if (!p.stage().relocating() && !p.stage().removed())
         {
-            p.setKnownPosition(x1_[i]);
+            p.stage().setKnownPosition(x1_[i]);
         }
     }
 

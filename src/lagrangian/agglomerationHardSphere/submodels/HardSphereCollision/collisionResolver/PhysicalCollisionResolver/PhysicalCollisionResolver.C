@@ -45,17 +45,17 @@ void Foam::PhysicalCollisionResolver<ParcelType>::makeAgglomerate
     p.lastPartnerProc() = -1;
     p.lastPartnerId() = -1;
     p.lastContactTime() = -GREAT;
-    p.markCollided();
-    p.markFormed();
-    p.relocateTo(xAg);
+    p.stage().markCollided();
+    p.stage().markFormed();
+    p.stage().relocateTo(xAg);
 }
 
 
 template<class ParcelType>
 void Foam::PhysicalCollisionResolver<ParcelType>::remove(ParcelType& p)
 {
-    p.markCollided();
-    p.markRemoved();
+    p.stage().markCollided();
+    p.stage().markRemoved();
 }
 
 
@@ -153,10 +153,10 @@ void Foam::PhysicalCollisionResolver<ParcelType>::resolve
         p.U() = st.U;
         p.omega() = st.omega;
         this->remember(p, partner, event.tc);
-        p.markCollided();
+        p.stage().markCollided();
         if (separate)
         {
-            p.relocateTo(xNew);
+            p.stage().relocateTo(xNew);
         }
     };
 

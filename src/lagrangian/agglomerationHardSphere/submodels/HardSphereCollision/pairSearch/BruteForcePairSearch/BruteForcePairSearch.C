@@ -128,7 +128,7 @@ void Foam::BruteForcePairSearch<ParcelType>::search
         const ParcelType& pk = *partner[k];
         box[k] = sweptBoxGrid::sweptBox
         (
-            pk.startPosition(), partnerX1[k], 0.5*inflate*pk.d()
+            pk.stage().startPosition(), partnerX1[k], 0.5*inflate*pk.d()
         );
         diagMax = max(diagMax, mag(box[k].span()));
     }
@@ -182,7 +182,7 @@ void Foam::BruteForcePairSearch<ParcelType>::search
                 (
                     sweptBoxGrid::sweptBox
                     (
-                        copy->startPosition(), xk, 0.5*inflate*copy->d()
+                        copy->stage().startPosition(), xk, 0.5*inflate*copy->d()
                     )
                 );
                 if (!sweptBoxGrid::overlap(box[i], bk))

@@ -40,7 +40,10 @@ Foam::boundBox Foam::ParticleGridPairSearch<ParcelType>::sweptBox
     const scalar inflate
 )
 {
-    return sweptBoxGrid::sweptBox(p.startPosition(), x1, 0.5*inflate*p.d());
+    return sweptBoxGrid::sweptBox
+    (
+        p.stage().startPosition(), x1, 0.5*inflate*p.d()
+    );
 }
 
 
