@@ -137,7 +137,7 @@ void Foam::sweptBoxGrid::build
             {
                 for (label bk = r[2]; bk <= r[5]; ++bk)
                 {
-                    ++start_[bucket(key(bi, bj, bk))];
+                    ++start_[bucket(bi, bj, bk)];
                 }
             }
         }
@@ -159,10 +159,9 @@ void Foam::sweptBoxGrid::build
             {
                 for (label bk = r[2]; bk <= r[5]; ++bk)
                 {
-                    const uint64_t k = key(bi, bj, bk);
-                    const label pos = --start_[bucket(k)];
+                    const label pos = --start_[bucket(bi, bj, bk)];
                     items_[pos] = i;
-                    itemKey_[pos] = k;
+                    itemKey_[pos] = key(bi, bj, bk);
                 }
             }
         }
