@@ -54,7 +54,7 @@ def test_positions_shorter_than_their_count(tmp_path):
     f = tmp_path / "0" / "lagrangian" / "kinematicCloud" / "positions"
     text = f.read_text()
     f.write_text(text.replace("(1 1 1) -1\n", ""))
-    with pytest.raises(ValueError, match="1 positions for the 2"):
+    with pytest.raises(ValueError, match="1 rows for the 2"):
         cloud.read_positions(f)
 
 
@@ -77,7 +77,8 @@ def test_record_follows_appended_particles(tmp_path):
     cloud.write_cloud(tmp_path, [(0, 0, 0), (1, 1, 1)], 1e-5, 1000,
                       n_primary=[1, 3])
     assert cloud.read_record(tmp_path, "0", "kinematicCloud") == {
-        "writer": "aggloTools", "nProcs": 1, "nParticles": 2,
+        "writer": "aggloTools", "complete": True,
+        "clouds": ["kinematicCloud"], "nProcs": 1, "nParticles": 2,
         "nParticlesTotal": 2, "nPrimariesTotal": 4}
     cloud.append_particles(tmp_path, "0", "kinematicCloud",
                            np.array([(2.0, 2, 2)]),
@@ -87,3 +88,68 @@ def test_record_follows_appended_particles(tmp_path):
     n = cloud.read_lagrangian(cloud.cloud_dir(tmp_path, "0") / "nPrimary")
     assert rec["nParticlesTotal"] == len(x) == 3
     assert rec["nPrimariesTotal"] == n.sum() == 6
+
+
+COORD_HEAD = ("FoamFile { version 2.0; format ascii; class Cloud<x>; "
+              "location \"0\"; object coordinates; }\n")
+
+
+def _coordinates(n):
+    rows = "".join(f"(0.25 0.25 0.25 0.25) {k} {k + 1} 1\n"
+                   for k in range(n))
+    return COORD_HEAD + f"{n}\n(\n{rows})\n"
+
+
+def test_coordinates_round_trip(tmp_path):
+    f = tmp_path / "coordinates"
+    f.write_text(_coordinates(5))
+    b, cell, face, pt = cloud.read_coordinates(f)
+    assert b.shape == (5, 4) and list(cell) == list(range(5))
+    assert list(face) == list(range(1, 6)) and (pt == 1).all()
+
+
+@pytest.mark.parametrize("edit, words", [
+    (lambda t: t[:int(0.6 * len(t))], "rows for the 291"),
+    (lambda t: t.replace("291\n(", "290\n(", 1), "291 rows for the 290"),
+    (lambda t: t.replace("(0.25 0.25 0.25 0.25) 7 8 1",
+                         "(0.25 0.25) 7 8 1", 1), "row 7 has 2 components"),
+], ids=["cutAt60percent", "wrongCount", "twoComponents"])
+def test_coordinates_cut_or_miscounted(tmp_path, edit, words):
+    """A coordinates file cut at 60 %, one whose count disagrees with its
+    rows, or a row with another number of components stops instead of
+    returning what it could read."""
+    f = tmp_path / "coordinates"
+    f.write_text(edit(_coordinates(291)))
+    with pytest.raises(ValueError, match=words) as e:
+        cloud.read_coordinates(f)
+    assert str(f) in str(e.value)
+
+
+def test_positions_with_mixed_vector_sizes(tmp_path):
+    """4- and 2-component vectors together hold 6 numbers: they were read
+    as two positions of 3."""
+    cloud.write_cloud(tmp_path, [(0, 0, 0), (1, 1, 1)], 1e-5, 1000)
+    f = tmp_path / "0" / "lagrangian" / "kinematicCloud" / "positions"
+    text = f.read_text()
+    f.write_text(text.replace("(0 0 0) -1", "(0 0 0 0) -1")
+                 .replace("(1 1 1) -1", "(1 1) -1"))
+    with pytest.raises(ValueError, match="row 0 has 4 components"):
+        cloud.read_positions(f)
+
+
+def test_binary_positions_cut_off(tmp_path):
+    """Binary records (the position and the cell in parentheses, then a
+    newline) read back; cut off before the list closes, they stop."""
+    import struct
+    head = ('FoamFile { version 2.0; format binary; '
+            'arch "LSB;label=32;scalar=64"; class Cloud<x>; '
+            'location "0"; object positions; }\n')
+    recs = b"".join(b"(" + struct.pack("<3di", k, k, k, -1) + b")\n"
+                    for k in range(3))
+    f = tmp_path / "positions"
+    f.write_bytes(head.encode() + b"3\n(" + recs + b")\n")
+    assert cloud.read_positions(f).tolist() == [[k] * 3 for k in range(3)]
+    f.write_bytes(head.encode() + b"3\n(" + recs[:-20])
+    with pytest.raises(ValueError, match="cut off") as e:
+        cloud.read_positions(f)
+    assert str(f) in str(e.value)

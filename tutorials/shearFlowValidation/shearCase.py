@@ -18,5 +18,15 @@ SETTINGS_KEYS = {"preset", "run", "gammaDot", "delta", "yMin", "uWall",
 
 
 def read_settings(case):
-    """The caseSettings of a run, every entry checked."""
-    return casesettings.read_settings(case, SETTINGS_KEYS)
+    """The caseSettings of a run, every entry checked; kernelCoeffs holds
+    only the <model>Coeffs of the run's own model (the set-up writes no
+    other: an entry such as agglomerationModel there would override the
+    run's model unseen)."""
+    s = casesettings.read_settings(case, SETTINGS_KEYS)
+    kc = s.get("kernelCoeffs", {})
+    allowed = {f"{s['agglomerationModel']}Coeffs"}
+    if not isinstance(kc, dict) or set(kc) - allowed:
+        raise SystemExit(f"{case}/system/caseSettings: kernelCoeffs may "
+                         f"hold only {' '.join(sorted(allowed))}, not "
+                         f"{' '.join(sorted(set(kc) - allowed)) or kc!r}")
+    return s

@@ -68,15 +68,34 @@ READINGS = {
 }
 
 
+#: The range of a step dt*gammaDot (dtGamma, detectDtGamma): positive
+#: (a negative one ran the solver backwards in time) and not so small that
+#: a run takes billions of steps
+DT_GAMMA_RANGE = (1e-4, 0.1)
+
+
+def check_step(v, where):
+    """v as a step dt*gammaDot, or stop naming where and the range."""
+    lo, hi = DT_GAMMA_RANGE
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        x = None
+    if isinstance(v, bool) or x is None or not lo <= x <= hi:
+        raise SystemExit(f"{where} {v!r} is not a number in [{lo:g}, "
+                         f"{hi:g}]")
+    return x
+
+
 def check_reading(variant, where):
     """Stop on an unknown reading or value, naming it and the choices."""
     check_keys(variant, set(READINGS), where)
     for k, v in variant.items():
         choices = READINGS[k]
         if choices is None:
-            if not (isinstance(v, (int, float)) and 0 < v <= 0.1):
-                raise SystemExit(f"{where}: {k} {v!r} is not a number in "
-                                 "(0, 0.1]")
+            if not isinstance(v, (int, float)):
+                raise SystemExit(f"{where}: {k} {v!r} is not a number")
+            check_step(v, f"{where}: {k}")
         elif v not in choices:
             raise SystemExit(f"{where}: {k} '{v}' is not one of: "
                              + " ".join(choices))
@@ -89,7 +108,7 @@ def tutorial_readings():
     out = {k: v[0] for k, v in READINGS.items() if v}
     out["fluidTorque"] = on_off(c["fluidTorque"], "presets/common: "
                                 "fluidTorque")
-    out["dtGamma"] = float(c["dtGamma"])
+    out["dtGamma"] = check_step(c["dtGamma"], "presets/common: dtGamma")
     return out
 
 
@@ -120,8 +139,9 @@ def settings(preset, run, variant=None):
     c = ps["common"]
     gamma, delta = float(c["gammaDot"]), float(c["delta"])
     detect = run == "detect"
-    dt_g = float(p.get("detectDtGamma", c["detectDtGamma"]) if detect
-                 else variant["dtGamma"])
+    dt_g = (check_step(p.get("detectDtGamma", c["detectDtGamma"]),
+                       f"presets/{preset}: detectDtGamma") if detect
+            else variant["dtGamma"])
     end_g = float(p["detectEndGamma"] if detect else p["endGamma"])
     steps = round(end_g / dt_g)
     dt = dt_g / gamma

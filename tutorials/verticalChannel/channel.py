@@ -36,6 +36,7 @@ two-way coupled ones; counters zeroed at its start).
 """
 
 import math
+import re
 import shutil
 import sys
 import time as time_module
@@ -413,6 +414,12 @@ def branch_clouds(case, time, models):
             for f in ("cloudProperties", cloud.RECORD):
                 shutil.copy(r / "uniform/lagrangian/particles" / f,
                             r / "uniform/lagrangian" / m)
+            # the record names the clouds of the case: now the models'
+            rec = r / "uniform/lagrangian" / m / cloud.RECORD
+            rec.write_text(re.sub(
+                r"clouds\s+\d+\s*\([^)]*\);",
+                f"clouds {len(models)} ( {' '.join(models)} );",
+                rec.read_text()))
             for f in sources:
                 shutil.copy(f, r / f"{m}:{f.name.split(':', 1)[1]}")
         shutil.rmtree(src)

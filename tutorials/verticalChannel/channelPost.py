@@ -484,24 +484,37 @@ def plots(out, p, res, runs):
 
 
 def picture(out, p, runs):
-    """pyvista picture of the first finished EAM run's last time."""
+    """pyvista picture of the first finished run's last time, from its
+    legacy positions or, where the preset writes none, from the
+    barycentric coordinates and the mesh; a run without particles to draw
+    is named, never skipped silently. Returns the picture's path (None:
+    none drawn, and said why)."""
     from aggloTools import render
     for (c, m), (adir, cname) in sorted(runs.items()):
         t = times.time_dirs(adir)[-1]
         cdir = t / "lagrangian" / cname
-        if not (cdir / "positions").exists():
+        if not any((cdir / f).exists() for f in ("positions",
+                                                 "coordinates")):
+            print(f"channelPost: no particle picture of {c} {m}: {cdir} "
+                  "holds neither positions nor coordinates")
             continue
-        x = cloud.read_positions(cdir / "positions")
+        x = cloud.cloud_positions(adir, t.name, cname)
         n = cloud.read_lagrangian(cdir / "nPrimary")
         if not len(x):
+            print(f"channelPost: no particle picture of {c} {m}: no "
+                  f"particles at {t}")
             continue
         Lx, Ly, Lz = p["L"]
+        png = out / f"particles{c}{m}.png"
         render.particles_picture(
-            out / f"particles{c}{m}.png", x, n, (0, Lx, 0, Ly, 0, Lz),
+            png, x, n, (0, Lx, 0, Ly, 0, Lz),
             title=f"verticalChannel {p['name']} {c} {m}: T*agg ="
                   f" {res_time(p, t):.3g}, {len(x)} particles,"
                   f" {int((n > 1).sum())} agglomerates")
-        return
+        return png
+    print("channelPost: no particle picture: no finished run has particles"
+          " to draw")
+    return None
 
 
 def res_time(p, t):

@@ -62,8 +62,10 @@ Usage
         [-eventsOut FILE] [kernelDict ...]
 
     -check ends with a fatal error (exit status 1) unless the run's kernel
-    reproduces every logged outcome. Outputs are written to a temporary
-    file and renamed, so a failed call leaves an earlier result intact.
+    reproduces every logged outcome. An output must be a regular file or
+    new (not a folder, a special file or a log read); it is written to a
+    verified temporary file and renamed, so a failed call leaves an
+    earlier result intact.
 
     The logs are read from postProcessing/<cloud>CollisionEvents of the
     case (events<rank>.bin: serial and decomposed runs alike).
@@ -74,7 +76,7 @@ Usage
 #include "Time.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
-#include "OFstream.H"
+#include "OStringStream.H"
 #include "hardSphereCollisionKernel.H"
 #include "hardSphereInput.H"
 #include "binaryCollision.H"
@@ -92,6 +94,7 @@ using namespace Foam;
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 #include "replayConfiguration.H"
+#include "replayOutput.H"
 #include "writeEvents.H"
 #include "writeReplay.H"
 
@@ -137,8 +140,9 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    // Every output goes to a temporary file renamed at the end, so that a
-    // failure leaves an earlier result as it was
+    // Every output is checked first and written last, through a verified
+    // temporary file (replayOutput.H): a failure leaves an earlier result
+    // as it was
     const bool keepEvents = args.found("eventsOut");
 
     const word cloudName(args.getOrDefault<word>("cloud", "kinematicCloud"));
@@ -150,16 +154,6 @@ int main(int argc, char *argv[])
             /"replay.json"
         )
     );
-    for (const word opt : {"json", "eventsOut"})
-    {
-        const fileName f(args.getOrDefault<fileName>(opt, ""));
-        if (args.found(opt) && !isDir(f.path()))
-        {
-            FatalErrorInFunction
-                << "Cannot write " << f << ": the folder " << f.path()
-                << " does not exist" << exit(FatalError);
-        }
-    }
     const word which(args.getOrDefault<word>("events", "all"));
     if (which != "all" && which != "first")
     {
@@ -171,21 +165,32 @@ int main(int argc, char *argv[])
     // The logs, in a deterministic order
     const fileName dir(collisionEventLog::folder(runTime, cloudName));
     fileNameList files(readDir(dir, fileName::FILE));
-    DynamicList<collisionEvent> events;
-    label nFiles = 0;
     Foam::sort(files);
+    fileNameList logs;
     for (const fileName& f : files)
     {
         if (f.hasExt("bin") && f.startsWith("events"))
         {
-            for (const collisionEvent& e : collisionEventFile::read(dir/f))
+            logs.append(f);
+        }
+    }
+
+    // The outputs checked before any work (replayOutput.H)
+    checkTarget("json", jsonOut, dir, logs);
+    if (keepEvents)
+    {
+        checkTarget("eventsOut", args.get<fileName>("eventsOut"), dir, logs);
+    }
+    DynamicList<collisionEvent> events;
+    const label nFiles = logs.size();
+    for (const fileName& f : logs)
+    {
+        for (const collisionEvent& e : collisionEventFile::read(dir/f))
+        {
+            if (which == "all" || e.category == 0)
             {
-                if (which == "all" || e.category == 0)
-                {
-                    events.append(e);
-                }
+                events.append(e);
             }
-            ++nFiles;
         }
     }
     if (!nFiles)

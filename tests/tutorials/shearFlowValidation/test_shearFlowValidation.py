@@ -244,3 +244,31 @@ def test_ci_study_undisturbed_and_diagnosis(ci_study):
         if n:
             assert diag[cat]["alpha_EAMnormal"] == pytest.approx(
                 d["EAM"][f"N_agg_{cat}"] / n, rel=1e-12)
+
+
+@pytest.mark.parametrize("entry, ok", [
+    ("EAMCoeffs { impactVelocity full; }", True),
+    ("agglomerationModel MAM;", False),
+    ("MAMCoeffs { closure table4; }", False),
+])
+def test_kernel_coeffs_hold_only_the_runs_model(tmp_path, entry, ok):
+    """A caseSettings' kernelCoeffs edited by hand to hold another entry
+    than the run's own <model>Coeffs (agglomerationModel MAM would turn
+    the EAM run into a MAM run unseen) is refused when the run is read."""
+    shear_case = tutorial_module("shearFlowValidation", "shearCase")
+    text = subprocess.run(
+        [str(project_dir() / ".venv/bin/python"), "shearFlow.py",
+         "settings", "ci", "EAM"], cwd=TUT, capture_output=True, text=True,
+        check=True).stdout
+    assert "kernelCoeffs        {  }" in text
+    f = tmp_path / "system" / "caseSettings"
+    f.parent.mkdir()
+    f.write_text(text.replace("kernelCoeffs        {  }",
+                              f"kernelCoeffs {{ {entry} }}"))
+    if ok:
+        assert shear_case.read_settings(tmp_path)["agglomerationModel"] \
+            == "EAM"
+    else:
+        with pytest.raises(SystemExit, match="kernelCoeffs may hold only "
+                           "EAMCoeffs"):
+            shear_case.read_settings(tmp_path)

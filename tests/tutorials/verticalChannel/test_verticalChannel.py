@@ -306,3 +306,26 @@ def test_resumed_log_counts_each_step_once():
         f"gradient = {g}\n" for g in gs) for t, gs in steps)
     assert post.step_values(log, r"pressure gradient = ([-0-9.eE+]+)") \
         == [10, 11, 22, 23, 32, 33, 40, 41]
+
+
+def test_picture_without_legacy_positions(smoke_runs, tmp_path, capsys):
+    """A run that writes no legacy positions (the paper preset) still gets
+    its particle picture, drawn from the barycentric coordinates and the
+    mesh at the same places; a run with neither file is named."""
+    post = tutorial_module("verticalChannel", "channelPost")
+    src = agg_runs(smoke_runs[1])[("C1", "EAM")]
+    adir = tmp_path / "agglomeration"
+    shutil.copytree(src, adir, ignore=shutil.ignore_patterns(
+        "processor*", "VTK", "postProcessing"))
+    t = times.time_dirs(adir)[-1]
+    pos = t / "lagrangian" / "EAM" / "positions"
+    x_legacy = cloud.read_positions(pos)
+    pos.unlink()
+    x = cloud.cloud_positions(adir, t.name, "EAM")
+    assert np.abs(x - x_legacy).max() < 1e-12
+    p = post.channel.preset("smoke")
+    png = post.picture(tmp_path, p, {("C1", "EAM"): (adir, "EAM")})
+    assert png is not None and png.stat().st_size > 10000
+    (t / "lagrangian" / "EAM" / "coordinates").unlink()
+    assert post.picture(tmp_path, p, {("C1", "EAM"): (adir, "EAM")}) is None
+    assert "neither positions nor coordinates" in capsys.readouterr().out

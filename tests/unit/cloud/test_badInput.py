@@ -146,6 +146,15 @@ CASES = {
     "couplingScaleZero": (SOL, SOL + " couplingScale 0;", "couplingScale"),
     "couplingScaleNegative": (SOL, SOL + " couplingScale -6;",
                               "couplingScale"),
+    # misspelt entries of the cloud's solution dictionary (were ignored)
+    "cellOrderIntervall": (SOL, SOL + " cellOrderIntervall 5;",
+                           "cellOrderIntervall"),
+    "couplingScal": (SOL, SOL + " couplingScal 2;", "couplingScal"),
+    # injected particles take constantProperties' rho0: another density
+    # than the material's passed, and the run's own restart was refused
+    "injectedRho0": ("constantProperties { rho0 2200; }",
+                     "constantProperties { rho0 1000; }",
+                     "constantProperties"),
 }
 
 # Cases needing other sub-models in the case (forces, dispersion)
@@ -281,6 +290,34 @@ def test_presets_reject_unknown_entries(tmp_path, foam_env, tutorial,
                          capture_output=True, text=True)
     assert bad.returncode != 0
     assert "nParticels" in bad.stderr + bad.stdout
+
+
+@pytest.mark.parametrize("entry, value", [
+    ("dtGamma", "-0.02"), ("dtGamma", "1e-9"), ("dtGamma", "0.5"),
+    ("detectDtGamma", "0"),
+])
+def test_shear_step_out_of_range(tmp_path, foam_env, entry, value):
+    """dt*gammaDot out of its range stops the set-up naming the entry and
+    the range: a negative step ran the solver backwards in time (and the
+    Allrun waited forever), 1e-9 meant about 2e10 steps."""
+    case = tmp_path / "shearFlowValidation"
+    shutil.copytree(ROOT / "tutorials" / "shearFlowValidation", case,
+                    ignore=shutil.ignore_patterns("runs", "results"))
+    args = ["shearFlow.py", "settings", "ci", "detect" if "detect" in entry
+            else "EAM"]
+    good = subprocess.run([sys.executable] + args, cwd=case,
+                          capture_output=True, text=True)
+    assert good.returncode == 0, good.stderr
+    presets = case / "presets"
+    text = presets.read_text()
+    old = [line for line in text.splitlines()
+           if line.strip().startswith(entry + " ")][0]
+    presets.write_text(text.replace(old, f"    {entry} {value};", 1))
+    bad = subprocess.run([sys.executable] + args, cwd=case,
+                         capture_output=True, text=True)
+    assert bad.returncode != 0
+    assert entry in bad.stderr and "[0.0001, 0.1]" in bad.stderr, \
+        bad.stderr
 
 
 # ------------------------------------------------- particle fields on read

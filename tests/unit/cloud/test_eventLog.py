@@ -205,30 +205,107 @@ def test_bad_arguments_leave_earlier_results(case_dir, foam_env):
     assert out.read_text() == before
 
 
-@pytest.mark.parametrize("field, offset, value, fmt, words", [
-    ("d1", 32 + 8 * 9, float("nan"), "<d", "d nan"),
-    ("category", 4, 7, "B", "category 7"),
-    ("branch", 5, 9, "B", "branch 9"),
-    ("nPrimary1", 208, -5, "<i", "nPrimary -5"),
+def _replay_limited(c, *args):
+    """The replay with a file size limit of 0 and SIGXFSZ ignored (as a
+    shell that ignores it leaves it): every write fails with EFBIG."""
+    import resource
+    import signal
+    import subprocess
+
+    def limit():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (0, 0))
+    return subprocess.run([foam_bin("hardSphereReplay"), "-case", str(c),
+                           *args], cwd=c, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True, timeout=120,
+                          preexec_fn=limit)
+
+
+def test_outputs_are_never_lost_or_misplaced(case_dir, foam_env):
+    """The replay's outputs: a write that fails (file size limit 0) exits
+    with status 1 and leaves the earlier replay.json and CSV as they were;
+    the run's own log, a folder, a FIFO and a link are refused as targets
+    before anything is written, and stay what they were."""
+    import os
+    c = gas(case_dir / "gas")
+    run_case(c)
+    out, csv = c / "r.json", c / "e.csv"
+    assert _replay_cmd(c, "-json", str(out), "-eventsOut",
+                       str(csv)).returncode == 0
+    before, before_csv = out.read_bytes(), csv.read_bytes()
+    assert len(before) > 100 and len(before_csv) > 100
+
+    res = _replay_limited(c, "-json", str(out))
+    assert res.returncode == 1 and "failed" in res.stdout, res.stdout[-1500:]
+    assert out.read_bytes() == before
+    res = _replay_limited(c, "-json", str(out), "-eventsOut", str(csv))
+    assert res.returncode == 1
+    assert out.read_bytes() == before and csv.read_bytes() == before_csv
+    assert not list(c.glob("*.tmp"))
+
+    log = eventlog.folder(c) / "events0.bin"
+    log_bytes = log.read_bytes()
+    res = _replay_cmd(c, "-eventsOut", str(log))
+    assert res.returncode == 1 and "log" in res.stdout, res.stdout[-1500:]
+    assert log.read_bytes() == log_bytes
+
+    d = c / "adir"
+    d.mkdir()
+    for opt in ("-json", "-eventsOut"):
+        res = _replay_cmd(c, opt, str(d))
+        assert res.returncode == 1 and "is a folder" in res.stdout
+        assert list(d.iterdir()) == []
+
+    fifo = c / "fifo"
+    os.mkfifo(fifo)
+    link = c / "link.json"
+    link.symlink_to(out)
+    for target in (fifo, link):
+        res = _replay_cmd(c, "-json", str(target))
+        assert res.returncode == 1 and "not a regular" in res.stdout
+    assert fifo.is_fifo() and link.is_symlink()
+    assert out.read_bytes() == before
+
+
+@pytest.mark.parametrize("field, index, value, fmt, words", [
+    ("d1", 0, float("nan"), "<d", "d nan"),
+    ("d1", 0, 1e300, "<d", "d 1e+300"),
+    ("rho1", 0, 1e-300, "<d", "rho 1e-300"),
+    ("U1", 0, 1e308, "<d", "velocity"),
+    ("omega2", 2, float("inf"), "<d", "spin"),
+    ("x1", 1, -1e7, "<d", "position"),
+    ("category", 0, 3, "B", "category 3"),
+    ("branch", 0, 9, "B", "branch 9"),
+    ("agglomerates", 0, 7, "B", "agglomerates 7"),
+    ("nPrimary1", 0, -5, "<i", "nPrimary -5"),
     ("timeIndex", 0, -3, "<i", "time index -3"),
-], ids=["nanDiameter", "category", "branch", "nPrimary", "timeIndex"])
-def test_corrupt_record_is_fatal(case_dir, foam_env, field, offset, value,
+], ids=["nanDiameter", "hugeDiameter", "tinyDensity", "hugeVelocity",
+        "infiniteSpin", "farPosition", "category", "branch",
+        "agglomerates", "nPrimary", "timeIndex"])
+def test_corrupt_record_is_fatal(case_dir, foam_env, field, index, value,
                                  fmt, words):
     """A record that cannot be a logged collision stops the replay with a
-    message naming the file, the record and the value (no SIGFPE)."""
+    message naming the file, the record and the value: no SIGFPE from
+    values whose products overflow (a velocity of 1e308, a diameter of
+    1e300, a density of 1e-300). The Python reader refuses the same
+    record with the same words."""
     import struct
     c = gas(case_dir / "gas")
     run_case(c)
     f = eventlog.folder(c) / "events0.bin"
     data = bytearray(f.read_bytes())
     k = 3
+    offset = eventlog.DTYPE.fields[field][1] + 8 * index
     pos = eventlog.HEADER_BYTES + k * eventlog.DTYPE.itemsize + offset
-    assert eventlog.DTYPE.fields[field][1] == offset
     struct.pack_into(fmt, data, pos, value)
     f.write_bytes(bytes(data))
-    res = _replay_cmd(c)
+    res = _replay_cmd(c, "-check")
     assert res.returncode == 1, res.stdout[-1500:]
-    assert f"record {k}" in res.stdout and words in res.stdout
+    assert "sigFpe" not in res.stdout
+    assert f"record {k}" in res.stdout and words in res.stdout, \
+        res.stdout[-1500:]
+    with pytest.raises(ValueError, match=rf"record {k}: .*{re.escape(words)}"):
+        eventlog.read_events(c)
 
 
 def test_variant_of_the_other_model_drops_the_run_coefficients(

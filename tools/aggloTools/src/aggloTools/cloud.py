@@ -20,29 +20,45 @@ RECORD = "hardSphereCloudState"
 
 
 def write_record(case, time, cloud, n, n_total=None, n_primaries=None,
-                 n_procs=1):
+                 n_procs=1, clouds=None):
     """The record of the particles written at time: n on this rank (case:
     the case or one processor folder), n_total and n_primaries over all
-    n_procs ranks (default: this rank's, primaries only)."""
+    n_procs ranks (default: this rank's, primaries only); clouds: the
+    clouds of the case that the record names (default: this one)."""
     n_total = n if n_total is None else n_total
     n_primaries = n_total if n_primaries is None else n_primaries
+    clouds = list(clouds) if clouds else [cloud]
     write_foamfile(Path(case) / str(time) / "uniform" / "lagrangian" / cloud
                    / RECORD, "dictionary",
                    f"{time}/uniform/lagrangian/{cloud}", RECORD,
-                   f"writer          aggloTools;\nnProcs          {n_procs};"
+                   f"writer          aggloTools;\ncomplete        true;\n"
+                   f"clouds          {len(clouds)} ( {' '.join(clouds)} );\n"
+                   f"nProcs          {n_procs};"
                    f"\nnParticles      {n};\n"
                    f"nParticlesTotal {n_total};\n"
                    f"nPrimariesTotal {n_primaries};")
 
 
 def read_record(case, time, cloud):
-    """The record of a written cloud as a dict of ints (None if absent)."""
+    """The record of a written cloud as a dict (None if absent): the
+    counts as ints, writer, complete (bool; true if not written, as by
+    earlier versions) and clouds (the names; [] if not written)."""
     from .foamfile import read_dict
     f = Path(case) / str(time) / "uniform" / "lagrangian" / cloud / RECORD
     if not f.is_file():
         return None
-    return {k: (int(v) if k != "writer" else v)
-            for k, v in read_dict(f).items()}
+    out = {"complete": True, "clouds": []}
+    for k, v in read_dict(f).items():
+        if k == "writer":
+            out[k] = v
+        elif k == "complete":
+            out[k] = v in ("true", "on", "yes", 1)
+        elif k == "clouds":
+            out[k] = [w for w in (v if isinstance(v, list) else [v])
+                      if isinstance(w, str) and w not in "()"]
+        else:
+            out[k] = int(v)
+    return out
 
 
 def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
@@ -105,6 +121,23 @@ def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
                    f"{count}; }}")
 
 
+def _binary_records(path, data, rec, n, start):
+    """The n binary particle records of dtype rec from start, each in
+    parentheses and followed by a newline, the list closed after them; a
+    file cut off or another layout stops."""
+    end = start + n * rec.itemsize
+    if len(data) < end or data[end:].lstrip()[:1] != b")":
+        raise ValueError(f"{path}: {n} binary records announced, the file "
+                         "ends before them or their list does not close "
+                         "after them (a file cut off?)")
+    a = np.frombuffer(data, rec, n, start)
+    if n and not ((a["open"] == ord("(")).all()
+                  and (a["close"] == ord(")")).all()
+                  and (a["nl"] == ord("\n")).all()):
+        raise ValueError(f"{path}: unexpected binary record layout")
+    return a
+
+
 def read_positions(path):
     """Cartesian positions from the legacy `positions` file (ASCII rows
     `(x y z) celli`, or binary records: the position and the cell label
@@ -118,21 +151,34 @@ def read_positions(path):
         n = int(m.group(2))
         rec = np.dtype([("open", "u1"), ("x", scalar, 3), ("cell", label),
                         ("close", "u1"), ("nl", "u1")])
-        a = np.frombuffer(data, rec, n, m.end())
-        if n and not ((a["open"] == ord("(")).all()
-                      and (a["close"] == ord(")")).all()
-                      and (a["nl"] == ord("\n")).all()):
-            raise ValueError(f"{path}: unexpected binary record layout")
+        a = _binary_records(path, data, rec, n, m.end())
         return a["x"].astype(float).reshape(n, 3)
-    body = re.sub(r"//[^\n]*", "", data[hend:].decode())
+    rows = _ascii_rows(path, data[hend:].decode(), r"-?\d+", 3)
+    return np.array([r[0] for r in rows], float).reshape(-1, 3)
+
+
+def _ascii_rows(path, text, labels, ncomp):
+    """The rows `(c1 ... cn) labels` of an ASCII particle list after its
+    header, each vector with exactly ncomp components, their number the
+    list's count and the list closed: (components, label strings) per row.
+    A file cut off, a wrong count or a vector of another size stops."""
+    body = re.sub(r"//[^\n]*", "", text)
     m = re.match(r"\s*(\d+)\s*\(", body)
-    rows = re.findall(r"\(([-+0-9.eE ]+)\)\s+-?\d+", body)
+    rows = re.findall(r"\(([-+0-9.eEnaifNAIF ]+)\)\s+(" + labels + r")",
+                      body)
     if m is None or int(m.group(1)) != len(rows) \
             or not body.rstrip().endswith(")"):
-        raise ValueError(f"{path}: {len(rows)} positions for the "
+        raise ValueError(f"{path}: {len(rows)} rows for the "
                          f"{m.group(1) if m else 'missing'} the list "
                          "announces (a file cut off?)")
-    return np.array([r.split() for r in rows], float).reshape(-1, 3)
+    out = []
+    for k, (vec, lab) in enumerate(rows):
+        comps = vec.split()
+        if len(comps) != ncomp:
+            raise ValueError(f"{path}: row {k} has {len(comps)} components"
+                             f" ({vec.strip()}), not {ncomp}")
+        out.append((comps, lab.split()))
+    return out
 
 
 def append_particles(case, time, cloud, x, new):
@@ -179,7 +225,8 @@ def append_particles(case, time, cloud, x, new):
         prim = int(np.sum(new.get("nPrimary", np.ones(n))))
         write_record(case, time, cloud, rec["nParticles"] + n,
                      rec["nParticlesTotal"] + n,
-                     rec["nPrimariesTotal"] + prim, rec["nProcs"])
+                     rec["nPrimariesTotal"] + prim, rec["nProcs"],
+                     rec["clouds"])
     return n0
 
 
@@ -220,20 +267,15 @@ def read_coordinates(path):
         rec = np.dtype([("open", "u1"), ("b", scalar, 4), ("cell", label),
                         ("tetFace", label), ("tetPt", label),
                         ("close", "u1"), ("nl", "u1")])
-        a = np.frombuffer(data, rec, n, m.end())
-        if n and not ((a["open"] == ord("(")).all()
-                      and (a["close"] == ord(")")).all()
-                      and (a["nl"] == ord("\n")).all()):
-            raise ValueError(f"{path}: unexpected binary record layout")
+        a = _binary_records(path, data, rec, n, m.end())
         return (a["b"].astype(float), a["cell"].astype(np.int64),
                 a["tetFace"].astype(np.int64), a["tetPt"].astype(np.int64))
-    text = data.decode()
-    rows = re.findall(r"\(([-+0-9.eE ]+)\)\s+(-?\d+)\s+(-?\d+)\s+(-?\d+)",
-                      text[hend:])
+    rows = _ascii_rows(path, data[hend:].decode(),
+                       r"-?\d+\s+-?\d+\s+-?\d+", 4)
     if not rows:
         return (np.zeros((0, 4)),) + (np.zeros(0, np.int64),) * 3
-    b = np.array([r[0].split() for r in rows], float)
-    lab = np.array([r[1:] for r in rows], np.int64)
+    b = np.array([r[0] for r in rows], float)
+    lab = np.array([r[1] for r in rows], np.int64)
     return b, lab[:, 0], lab[:, 1], lab[:, 2]
 
 

@@ -39,6 +39,77 @@ BRANCHES = ("rebound", "agglomerate", "eq21", "eq65", "caseI", "caseII",
 GHOST = 255
 
 
+#: The bounds of a record's values, as the C++ reader checks them
+#: (collisionEventFile.C; doc/eventLog.md, "Valid records")
+D_RANGE = (1e-9, 1.0)            # m
+RHO_RANGE = (1e-3, 1e6)          # kg/m3
+X_MAX, U_MAX, OMEGA_MAX = 1e6, 1e4, 1e12   # per component
+
+
+def invalid_record(r):
+    """The reason why the record r cannot be a logged collision, in the
+    C++ reader's words and order ('' if it can be one)."""
+    nb = len(BRANCHES)
+    if r["timeIndex"] < 0:
+        return f"time index {r['timeIndex']} (valid: >= 0)"
+    if r["category"] > 2:
+        return (f"category {r['category']} (valid: 0 first, 1 repeat, 2 "
+                "overlap at the start of the step)")
+    if r["branch"] != GHOST and r["branch"] >= nb:
+        return (f"branch {r['branch']} (valid: 0-{nb - 1}, {GHOST} "
+                "ghost)")
+    if r["agglomerates"] > 1:
+        return f"agglomerates {r['agglomerates']} (valid: 0, 1)"
+    if r["type"] > 1:
+        return f"collision type {r['type']} (valid: 0 sticking, 1 sliding)"
+    if not np.isfinite(r["time"]):
+        return f"contact time {r['time']} (valid: finite)"
+    for k in (1, 2):
+        d, rho = r[f"d{k}"], r[f"rho{k}"]
+        if not D_RANGE[0] <= d <= D_RANGE[1]:
+            return f"partner {k}: d {d:g} (valid: {D_RANGE[0]:g} - " \
+                f"{D_RANGE[1]:g} m)"
+        if not RHO_RANGE[0] <= rho <= RHO_RANGE[1]:
+            return f"partner {k}: rho {rho:g} (valid: {RHO_RANGE[0]:g} - " \
+                f"{RHO_RANGE[1]:g} kg/m3)"
+        if r[f"nPrimary{k}"] < 1:
+            return f"partner {k}: nPrimary {r[f'nPrimary{k}']} (valid: >= 1)"
+        for name, what, bound, unit in (("x", "position", X_MAX, "m"),
+                                        ("U", "velocity", U_MAX, "m/s"),
+                                        ("omega", "spin", OMEGA_MAX,
+                                         "rad/s")):
+            v = r[f"{name}{k}"]
+            if not (np.all(np.isfinite(v)) and np.all(np.abs(v) <= bound)):
+                return (f"partner {k}: {what} {tuple(v.tolist())} (valid: "
+                        f"finite, each component within +-{bound:g} {unit})")
+    return ""
+
+
+def check_records(records, path):
+    """Stop (ValueError naming the file, the record and the value) at the
+    first record that cannot be a logged collision, as the C++ reader
+    does."""
+    r = records
+    with np.errstate(invalid="ignore"):
+        bad = ((r["timeIndex"] < 0) | (r["category"] > 2)
+               | ((r["branch"] != GHOST) & (r["branch"] >= len(BRANCHES)))
+               | (r["agglomerates"] > 1) | (r["type"] > 1)
+               | ~np.isfinite(r["time"]))
+        for k in (1, 2):
+            d, rho = r[f"d{k}"], r[f"rho{k}"]
+            bad |= ~((d >= D_RANGE[0]) & (d <= D_RANGE[1]))
+            bad |= ~((rho >= RHO_RANGE[0]) & (rho <= RHO_RANGE[1]))
+            bad |= r[f"nPrimary{k}"] < 1
+            for name, bound in (("x", X_MAX), ("U", U_MAX),
+                                ("omega", OMEGA_MAX)):
+                v = r[f"{name}{k}"]
+                bad |= ~np.all(np.isfinite(v) & (np.abs(v) <= bound), axis=1)
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise ValueError(f"{path}: record {k}: {invalid_record(r[k])}; the "
+                         "file is corrupt")
+
+
 def folder(case, cloud="kinematicCloud"):
     return Path(case) / "postProcessing" / f"{cloud}CollisionEvents"
 
@@ -55,7 +126,10 @@ def read_file(path):
     if body % DTYPE.itemsize:
         raise ValueError(f"{path}: a partial record at the end (a write"
                          " cut off; a restart of the run cuts it back)")
-    return np.frombuffer(data, DTYPE, body // DTYPE.itemsize, HEADER_BYTES)
+    records = np.frombuffer(data, DTYPE, body // DTYPE.itemsize,
+                            HEADER_BYTES)
+    check_records(records, path)
+    return records
 
 
 def read_events(case, cloud="kinematicCloud"):

@@ -39,37 +39,72 @@ OWN_FIELDS = {"omega", "nPrimary", "lastPartnerProc", "lastPartnerId",
               "lastContactTime"}
 
 
-def _record_count(path):
-    """nParticles of a cloud record (this rank's particles)."""
-    for line in path.read_text().splitlines():
+def _record(path):
+    """The entries of a cloud record that the checks read: nParticles
+    (this rank's particles), complete, clouds (the clouds of the case)."""
+    text = path.read_text()
+    rec = {"nParticles": None, "complete": True, "clouds": []}
+    for line in text.splitlines():
         words = line.replace(";", " ").split()
         if words[:1] == ["nParticles"]:
-            return int(words[1])
-    return None
+            rec["nParticles"] = int(words[1])
+        elif words[:1] == ["complete"]:
+            rec["complete"] = words[1] in ("true", "on", "yes", "1")
+    start = text.find("clouds")
+    if start >= 0 and "(" in text[start:]:
+        inner = text[start:].split("(", 1)[1].split(")", 1)[0]
+        rec["clouds"] = inner.split()
+    return rec
 
 
 def _clouds_incomplete(folder):
-    """True if a cloud's files of a written time disagree with its record:
-    the record missing beside the parcel's own fields, or present with a
-    particle field missing."""
+    """True if a cloud's files of a written time disagree with its record
+    (clouds/hardSphereCloudState, the same rules as the solver's): the
+    record says the write began only; the record missing beside the
+    parcel's own fields, or where the record of another cloud names the
+    cloud; present with a particle field missing."""
     lag, uni = folder / "lagrangian", folder / "uniform" / "lagrangian"
     names = {p.name for d in (lag, uni) if d.is_dir() for p in d.iterdir()
              if p.is_dir()}
-    for name in names:
-        rec = uni / name / CLOUD_RECORD
+    records = {n: _record(uni / n / CLOUD_RECORD) for n in names
+               if (uni / n / CLOUD_RECORD).is_file()}
+    named = {c for r in records.values() for c in r["clouds"]}
+    for name in names | named:
+        rec = records.get(name)
         have = ({f.name for f in (lag / name).iterdir()}
                 if (lag / name).is_dir() else set())
-        if not rec.is_file():
-            # the parcel's fields without the cloud's uniform folder: lost
-            # (a version without the record keeps the folder)
-            if have & OWN_FIELDS and not (uni / name).is_dir():
+        if rec is None:
+            if have & OWN_FIELDS or name in named:
                 return True
             continue
-        n = _record_count(rec)
+        if not rec["complete"]:
+            return True
+        n = rec["nParticles"]
         if n and not ({"coordinates", "positions"} & have
                       and OWN_FIELDS <= have):
             return True
     return False
+
+
+def _empty_clouds(folder):
+    """The clouds whose record at this time says this rank holds no
+    particles (their particle files are not written)."""
+    uni = folder / "uniform" / "lagrangian"
+    if not uni.is_dir():
+        return set()
+    return {d.name for d in uni.iterdir()
+            if (d / CLOUD_RECORD).is_file()
+            and _record(d / CLOUD_RECORD)["nParticles"] == 0}
+
+
+def _expected_files(previous, last):
+    """The files of the previous write that the last one must have too:
+    all but the particle files of a cloud that has none on this rank at
+    the last write (a legitimate write of 0 particles writes none)."""
+    empty = _empty_clouds(last)
+    return {f for f in _files(previous)
+            if not (len(f.parts) > 2 and f.parts[0] == "lagrangian"
+                    and f.parts[1] in empty)}
 
 
 def incomplete_time(case):
@@ -88,7 +123,8 @@ def incomplete_time(case):
         return last
     if _clouds_incomplete(last):
         return last
-    if len(times) > 2 and not _files(previous) <= _files(last):
+    if len(times) > 2 and not _expected_files(previous, last) \
+            <= _files(last):
         return last
     return None
 

@@ -31,6 +31,7 @@ License
 #include "Time.H"
 #include "cloud.H"
 #include "OSspecific.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
@@ -93,10 +94,108 @@ bool present(const Foam::IOobject& io)
      || Foam::isFile(io.objectPath() + ".gz");
 }
 
+
+//- The record of the current time: writer, completeness, the clouds of
+//  the case (sorted, so that every rank and run writes the same list)
+Foam::localIOdictionary newRecord
+(
+    const Foam::polyMesh& mesh,
+    const Foam::word& cloudName,
+    const bool complete
+)
+{
+    Foam::localIOdictionary record
+    (
+        recordIO(mesh, cloudName, Foam::IOobject::NO_READ)
+    );
+    const Foam::string app(Foam::getEnv("FOAM_EXECUTABLE"));
+    record.add
+    (
+        "writer",
+        Foam::word(app.empty() ? "OpenFOAM" : app.c_str())
+    );
+    record.add("complete", Foam::word(complete ? "true" : "false"));
+    record.add("clouds", mesh.sortedNames<Foam::cloud>());
+    return record;
+}
+
+
+void writeRecord(Foam::localIOdictionary& record, const Foam::Time& time)
+{
+    record.regIOobject::writeObject
+    (
+        Foam::IOstream::ASCII,
+        Foam::IOstream::currentVersion,
+        time.writeCompression(),
+        true
+    );
+}
+
+
+//- The first other cloud whose record of the current time names cloudName
+//  (this rank's folder), or empty
+Foam::word namedBy(const Foam::Time& time, const Foam::word& cloudName)
+{
+    const Foam::fileName dir
+    (
+        time.timePath()/"uniform"/Foam::cloud::prefix
+    );
+    for
+    (
+        const Foam::fileName& other
+      : Foam::readDir(dir, Foam::fileName::DIRECTORY)
+    )
+    {
+        const Foam::fileName f
+        (
+            dir/other/Foam::hardSphereCloudState::recordName
+        );
+        if (other == cloudName || !Foam::isFile(f))
+        {
+            continue;
+        }
+        const Foam::dictionary d((Foam::IFstream(f))());
+        const Foam::wordList clouds
+        (
+            d.getOrDefault<Foam::wordList>("clouds", Foam::wordList())
+        );
+        if (clouds.found(cloudName))
+        {
+            return other;
+        }
+    }
+    return Foam::word::null;
+}
+
+//- True if the current time is the earliest time folder of the case (or
+//  of this processor folder): where initial particles are written
+bool earliestTime(const Foam::Time& time)
+{
+    for (const Foam::instant& t : time.times())
+    {
+        if (t.name() != time.constant())
+        {
+            return t.equal(time.value());
+        }
+    }
+    return true;
+}
+
 } // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::hardSphereCloudState::begin
+(
+    const polyMesh& mesh,
+    const word& cloudName
+)
+{
+    localIOdictionary record(newRecord(mesh, cloudName, false));
+    writeRecord(record, mesh.time());
+}
+
 
 void Foam::hardSphereCloudState::write
 (
@@ -106,20 +205,12 @@ void Foam::hardSphereCloudState::write
     const label nPrimaries
 )
 {
-    localIOdictionary record(recordIO(mesh, cloudName, IOobject::NO_READ));
-    const string app(getEnv("FOAM_EXECUTABLE"));
-    record.add("writer", word(app.empty() ? "OpenFOAM" : app.c_str()));
+    localIOdictionary record(newRecord(mesh, cloudName, true));
     record.add("nProcs", Pstream::nProcs());
     record.add("nParticles", nParticles);
     record.add("nParticlesTotal", returnReduce(nParticles, sumOp<label>()));
     record.add("nPrimariesTotal", returnReduce(nPrimaries, sumOp<label>()));
-    record.regIOobject::writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        mesh.time().writeCompression(),
-        true
-    );
+    writeRecord(record, mesh.time());
 }
 
 
@@ -136,49 +227,51 @@ void Foam::hardSphereCloudState::check
     const IOobject io(recordIO(mesh, cloudName, IOobject::MUST_READ));
     const bool here = present(io);
 
-    // The same reductions on every rank before any rank may stop
-    const bool anywhere = returnReduce(here, orOp<bool>());
-    const label nTotal = returnReduce(nParticles, sumOp<label>());
-    const label nPrimTotal = returnReduce(nPrimaries, sumOp<label>());
-
     wordList missing;
     wordList there;
     for (const word& f : fields)
     {
         (present(fieldIO(mesh, cloudName, f)) ? there : missing).append(f);
     }
-    const bool solverTime = isFile(time.timePath()/"uniform"/"time");
+    const word namer(here ? word::null : namedBy(time, cloudName));
+
+    // The same reductions on every rank before any rank may stop
+    const bool anywhere = returnReduce(here, orOp<bool>());
+    const label nTotal = returnReduce(nParticles, sumOp<label>());
+    const label nPrimTotal = returnReduce(nPrimaries, sumOp<label>());
+
+    // Initial particles written by hand: at the case's earliest time,
+    // which no solver wrote (no uniform/time)
+    const bool initial =
+        earliestTime(time) && !isFile(time.timePath()/"uniform"/"time");
 
     if (!anywhere)
     {
-        // Only a solver-written time with the parcel's own fields must
-        // have the record: its uniform folder was lost. A time written
-        // before the record existed has the cloud's uniform folder
-        // (cloudProperties) without it: read as before, with a warning
-        const fileName uniformDir
-        (
-            time.timePath()/"uniform"/cloud::prefix/cloudName
-        );
-        if (solverTime && there.size() && isDir(uniformDir))
-        {
-            WarningInFunction
-                << "Cloud " << cloudName << " at time " << time.timeName()
-                << ": no record " << recordName << " in " << uniformDir
-                << " (written by a version without it): the particles"
-                << " read are not checked against what was written"
-                << endl;
-        }
-        else if (solverTime && there.size())
+        if (there.size() && !initial)
         {
             FatalErrorInFunction
                 << "Cloud " << cloudName << " at time " << time.timeName()
                 << ": the particle fields " << there << " are there but"
-                << " the record " << io.objectPath() << " is missing (the"
-                << " uniform folder of the cloud was lost or its write cut"
-                << " off). Restart from an earlier time, or remove "
-                << time.timePath()/cloud::prefix/cloudName
-                << " to restart without particles" << exit(FatalError);
+                << " the record " << io.objectPath() << " is missing: the"
+                << " uniform folder of the time or of the cloud was lost,"
+                << " or its write cut off. Restart from an earlier time, or"
+                << " remove " << time.timePath()/cloud::prefix/cloudName
+                << " to restart without particles (particles written by"
+                << " hand at a later time than the case's first need the"
+                << " record too: aggloTools.cloud.write_record)"
+                << exit(FatalError);
         }
+        if (!namer.empty())
+        {
+            FatalErrorInFunction
+                << "Cloud " << cloudName << " at time " << time.timeName()
+                << ": the record of cloud " << namer << " of this time"
+                << " names this cloud, but its record " << io.objectPath()
+                << " is missing: its write never began (cut off). Restart"
+                << " from an earlier time" << exit(FatalError);
+        }
+        // (A rank without the fields or the naming record returns; the
+        // one that has them stops the run)
         return;
     }
     if (!here)
@@ -191,6 +284,14 @@ void Foam::hardSphereCloudState::check
     }
 
     const localIOdictionary record(io);
+    if (!record.getOrDefault<bool>("complete", true))
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloudName << " at time " << time.timeName()
+            << ": the write of this time began but did not end (the record"
+            << " " << io.objectPath() << " says complete false): it was"
+            << " cut off. Restart from an earlier time" << exit(FatalError);
+    }
     const label recTotal = record.get<label>("nParticlesTotal");
     const label recPrim = record.get<label>("nPrimariesTotal");
 

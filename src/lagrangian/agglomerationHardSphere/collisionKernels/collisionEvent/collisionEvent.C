@@ -164,4 +164,12 @@ void Foam::collisionEvent::unpack(const char* buf)
 }
 
 
+Foam::label Foam::collisionEvent::agglomeratesByte(const char* buf)
+{
+    // After the time index (4 bytes), the category and the branch
+    std::size_t pos = sizeof(int32_t) + 2;
+    return get<uint8_t>(buf, pos);
+}
+
+
 // ************************************************************************* //

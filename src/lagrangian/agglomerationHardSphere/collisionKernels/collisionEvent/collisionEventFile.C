@@ -29,6 +29,7 @@ License
 #include "error.H"
 #include <fstream>
 #include <sstream>
+#include <cmath>
 #include <unistd.h>
 #include <sys/stat.h>
 
@@ -49,18 +50,48 @@ long long fileBytes(const Foam::fileName& file)
 }
 
 
-bool finiteVector(const Foam::vector& v)
+//- The bounds of a record's values (doc/eventLog.md, "Valid records";
+//  aggloTools.eventlog checks the same): wide enough for any particle of
+//  a flow, narrow enough that the kernels' products (masses, energies,
+//  moments of inertia) stay finite, so that a corrupt record is refused
+//  instead of stopping the replay with a floating-point exception
+const Foam::scalar dMin = 1e-9, dMax = 1;           // m
+const Foam::scalar rhoMin = 1e-3, rhoMax = 1e6;     // kg/m3
+const Foam::scalar xMax = 1e6;                      // m, per component
+const Foam::scalar UMax = 1e4;                      // m/s, per component
+const Foam::scalar omegaMax = 1e12;                 // rad/s, per component
+
+
+//- A vector as text, (x y z)
+std::string text(const Foam::vector& v)
 {
-    return
-        std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+    std::ostringstream os;
+    os << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
+    return os.str();
+}
+
+
+//- True if every component of v is finite and within +-bound
+bool bounded(const Foam::vector& v, const Foam::scalar bound)
+{
+    for (const Foam::scalar c : {v.x(), v.y(), v.z()})
+    {
+        if (!(std::isfinite(c) && std::abs(c) <= bound))
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 
 //- The reason why a record read from a log cannot be a logged collision
-//  (empty if it can be one)
-std::string invalidRecord(const Foam::collisionEvent& e)
+//  (empty if it can be one); buf: the record as read
+std::string invalidRecord(const Foam::collisionEvent& e, const char* buf)
 {
     const int nBranches = Foam::collisionOutcome::branchTypeNames.size();
+    const Foam::label agglomerates =
+        Foam::collisionEvent::agglomeratesByte(buf);
 
     std::ostringstream os;
     if (e.timeIndex < 0)
@@ -82,6 +113,10 @@ std::string invalidRecord(const Foam::collisionEvent& e)
            << nBranches - 1 << ", "
            << Foam::collisionEvent::ghostBranch << " ghost)";
     }
+    else if (agglomerates < 0 || agglomerates > 1)
+    {
+        os << "agglomerates " << agglomerates << " (valid: 0, 1)";
+    }
     else if (e.type < 0 || e.type > 1)
     {
         os << "collision type " << e.type << " (valid: 0 sticking,"
@@ -98,34 +133,45 @@ std::string invalidRecord(const Foam::collisionEvent& e)
             break;
         }
         const int k = p == &e.p1 ? 1 : 2;
-        if (!(std::isfinite(p->d) && p->d > 0))
+        if (!(std::isfinite(p->d) && p->d >= dMin && p->d <= dMax))
         {
-            os << "partner " << k << ": d " << p->d << " (valid: > 0)";
+            os << "partner " << k << ": d " << p->d << " (valid: "
+               << dMin << " - " << dMax << " m)";
         }
-        else if (!(std::isfinite(p->rho) && p->rho > 0))
+        else if
+        (
+            !(std::isfinite(p->rho) && p->rho >= rhoMin && p->rho <= rhoMax)
+        )
         {
-            os << "partner " << k << ": rho " << p->rho << " (valid: > 0)";
+            os << "partner " << k << ": rho " << p->rho << " (valid: "
+               << rhoMin << " - " << rhoMax << " kg/m3)";
         }
         else if (p->nPrimary < 1)
         {
             os << "partner " << k << ": nPrimary " << p->nPrimary
                << " (valid: >= 1)";
         }
-        else if
-        (
-            !finiteVector(p->x) || !finiteVector(p->U)
-         || !finiteVector(p->omega)
-        )
+        else if (!bounded(p->x, xMax))
         {
-            os << "partner " << k << ": a position, velocity or spin that"
-               << " is not finite";
+            os << "partner " << k << ": position " << text(p->x) << " (valid:"
+               << " finite, each component within +-" << xMax << " m)";
+        }
+        else if (!bounded(p->U, UMax))
+        {
+            os << "partner " << k << ": velocity " << text(p->U) << " (valid:"
+               << " finite, each component within +-" << UMax << " m/s)";
+        }
+        else if (!bounded(p->omega, omegaMax))
+        {
+            os << "partner " << k << ": spin " << text(p->omega) << " (valid:"
+               << " finite, each component within +-" << omegaMax
+               << " rad/s)";
         }
     }
     return os.str();
 }
 
 
-//- Check the header of an open file against this machine's
 void checkHeader(std::istream& is, const Foam::fileName& file)
 {
     std::string head(Foam::collisionEventFile::headerBytes, ' ');
@@ -233,7 +279,7 @@ Foam::collisionEventFile::read(const fileName& file)
         e.unpack(buf);
 
         // A corrupt record would be replayed as a collision
-        const std::string why(invalidRecord(e));
+        const std::string why(invalidRecord(e, buf));
         if (!why.empty())
         {
             FatalErrorInFunction

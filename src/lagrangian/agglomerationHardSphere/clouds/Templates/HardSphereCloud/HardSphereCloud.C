@@ -29,13 +29,26 @@ License
 #include "wallPolyPatch.H"
 #include "clockTime.H"
 #include "hardSphereCloudState.H"
+#include "hardSphereInput.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
 void Foam::HardSphereCloud<CloudType>::setModels()
 {
+    // The solution dictionary: the entries of v1912's cloudSolution and
+    // this cloud's own; a misspelt one stops instead of being ignored
     const dictionary& sd = this->solution().dict();
+    hardSphereInput::checkKeys
+    (
+        sd,
+        {
+            "active", "coupled", "transient", "cellValueSourceCorrection",
+            "maxCo", "deltaTMax", "calcFrequency", "maxTrackTime",
+            "sourceTerms", "interpolationSchemes", "integrationSchemes",
+            "couplingScale", "cellOrderInterval"
+        }
+    );
     couplingScale_ = sd.getOrDefault<scalar>("couplingScale", 1);
     if (!(couplingScale_ > 0))
     {
@@ -127,9 +140,9 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
                 this->mesh(), this->name(), this->size(), nPrimaries(),
                 parcelType::ownFieldNames()
             );
-            collisionModel_->checkParticles();
             this->deleteLostParticles();
         }
+        collisionModel_->checkParticles();
     }
 }
 
@@ -169,6 +182,14 @@ bool Foam::HardSphereCloud<CloudType>::writeObject
 template<class CloudType>
 void Foam::HardSphereCloud<CloudType>::evolve()
 {
+    // This step ends with a write: its record says that the write began
+    // (before any file of the time), so that a write cut off before this
+    // cloud's particles are complete is refused on restart
+    if (this->db().time().writeTime())
+    {
+        hardSphereCloudState::begin(this->mesh(), this->name());
+    }
+
     if (this->solution().canEvolve())
     {
         clockTime timer;

@@ -38,6 +38,22 @@ void Foam::HardSphereCollision<CloudType>::checkParticles() const
         return;
     }
     const scalar rho0 = kernel_.material().rho0();
+
+    // Injected particles take the density of constantProperties: it must
+    // be the material's too, or the first injection makes particles that a
+    // restart refuses
+    const scalar rhoInjected = this->owner().constProps().rho0();
+    if (mag(rhoInjected - rho0) > 1e-9*rho0)
+    {
+        FatalIOErrorInFunction(this->owner().particleProperties())
+            << "Cloud " << this->owner().name() << ": constantProperties"
+            << " rho0 = " << rhoInjected << " (the density of injected"
+            << " particles) differs from the material's rho0 = " << rho0
+            << " of hardSphereCoeffs: a primary has the material's density"
+            << " (the structure model builds agglomerates from rho0); set"
+            << " both to the same value" << exit(FatalIOError);
+    }
+
     const bool vsm = kernel_.structure().type() == "VSM";
     label i = 0;
     for (const parcelType& p : this->owner())
