@@ -88,7 +88,13 @@ def analyse_run(p, adir, cloud):
     T = (st["Time"] - t0) / p["tScale"]
     T = np.concatenate(([0.0], T))
     w0, w1 = p["window"]
-    r = {"case": str(adir.relative_to(HERE)), "cloud": cloud}
+    # the case relative to the tutorial, or absolute when the runs are
+    # kept elsewhere (a clone outside the work tree)
+    try:
+        case = str(adir.relative_to(HERE))
+    except ValueError:
+        case = str(adir)
+    r = {"case": case, "cloud": cloud}
     for key, col in (("col", "nCol"), ("agg", "nAgg"),
                      ("colFirst", "nColFirst"), ("wall", "nWall")):
         n = np.concatenate(([0.0], st[col]))

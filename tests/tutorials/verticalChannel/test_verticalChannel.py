@@ -329,3 +329,40 @@ def test_picture_without_legacy_positions(smoke_runs, tmp_path, capsys):
     (t / "lagrangian" / "EAM" / "coordinates").unlink()
     assert post.picture(tmp_path, p, {("C1", "EAM"): (adir, "EAM")}) is None
     assert "neither positions nor coordinates" in capsys.readouterr().out
+
+
+def test_regime_study_post(smoke_runs, tmp_path):
+    """The regime study's post-processing (channelRegime.py) on the smoke
+    runs: the contacts it reads from the event log add up to the
+    statistics' counters (first, repeat and agglomerating contacts of the
+    window), the particle concentration at the start of agglomeration is
+    that of the uniform release (near-wall over centre within 3 sigma of
+    1, Poisson), and a variant not run is reported as such, not guessed."""
+    tutorial_module("verticalChannel", "channel")
+    tutorial_module("verticalChannel", "channelPost")
+    regime = tutorial_module("verticalChannel", "channelRegime")
+    runs = smoke_runs[2] / "runs"
+    res = regime.run_post(runs, tmp_path, ["smoke", "regime32"])
+    smoke, missing = res["variants"]
+    assert missing["result"] is None
+    assert "regime32" in (tmp_path / "regime.txt").read_text()
+    r = smoke["result"]
+    adir = agg_runs(smoke_runs[2])[("C1", "EAM")]
+    for m in ("EAM", "MAM"):
+        x = r["models"][m]
+        st = read_stats(adir, m)
+        ct = x["contacts"]
+        assert ct["nFirst"] == x["nColFirst_end"] == st["nColFirst"][-1]
+        assert ct["nRepeat"] == x["nColRepeat_end"] == st["nColRepeat"][-1]
+        assert ct["nAgg"] == st["nAggFirst"][-1] + st["nAggRepeat"][-1]
+        assert ct["nAgg"] >= 25     # the slow seeded pairs
+        # the slow seeded pairs approach at 0.3 mm/s, the fast at 20
+        assert 0.25 < np.median(ct["un_mm_s_agg"]) < 0.35
+    c = r["concentration"]
+    nb = len(c["alpha"])
+    per_slab = N_RELEASED / nb
+    sigma = math.sqrt(1 / (2 * per_slab) + 1 / (nb / 4 * per_slab))
+    assert abs(c["nearWallOverCentre"] - 1) < 3 * sigma, c
+    assert (tmp_path / "regime.png").stat().st_size > 10000
+    assert json.loads((tmp_path / "regime.json").read_text())[
+        "variants"][0]["result"]["models"]["EAM"]["f_col_scaled"] > 0
