@@ -1,13 +1,16 @@
 """shearFlowValidation: the post-processing of the runs (paper Appendix
 B; doc/cases.md B.4-B.6): each run's statistics, the regression rows
-(the paper's statements S1-S4 among them, shearStatements.py),
+(the paper's statements of App. B among them, shearStatements.py),
 summary.json, regression.txt and the plots of results/<preset>/.
 
     shearPost.py PRESET [RUNS_DIR [OUT_DIR]]   (also: shearFlow.py post)
+    shearPost.py rejudge PRESET                the statements judged again
+                                               on results/PRESET/summary.json
 """
 
 import json
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -56,6 +59,21 @@ class Run:
     def decay(self, alpha, form):
         return decay_theory(self.np0, self.dncol, self.np_before, alpha,
                             form)[1:] / self.np0
+
+    def series(self, alpha_th, n_max=1001):
+        """The time series the statements judge (shearStatements), at
+        most n_max samples (every step's counters are cumulative, so a
+        sample holds them exactly; the last step is always one): t gammaDot,
+        N_p, the cumulative N_col, N_agg and first contacts, D10 and the
+        B.8 curve (consistent form, driven by the run's own kernel)."""
+        n = len(self.tg)
+        k = np.unique(np.linspace(0, n - 1, min(n, n_max)).astype(int))
+        th = self.decay(alpha_th, "consistent") * self.np0
+        st = self.st
+        return {"np0": self.np0, "tg": self.tg[k], "Np": self.np_after[k],
+                "nCol": st["nCol"][k], "nAgg": st["nAgg"][k],
+                "nColFirst": st["nColFirst"][k], "D10": st["D10"][k],
+                "theory": th[k]}
 
     def mass_error(self):
         m = self.st["mass"]
@@ -213,19 +231,15 @@ def post(preset, runs_dir=None, out_dir=None):
                              and np.all(np.diff(r.np_after) <= 0))))
 
     if len(phys) == 2:
-        # The paper's statements S1-S4 (shearStatements.py): the same rows
-        # as the study's, judged on this preset's runs
-        t_end_g = min(runs[k].tg[-1] for k in ("EAM", "MAM"))
-        short = (f"the paper's statements concern t*gammaDot = "
-                 f"{shearStatements.PAPER_END:g}; this preset ends at "
-                 f"{t_end_g:g}" if t_end_g < shearStatements.PAPER_END
-                 * (1 - 1e-6) else None)
-        for r in shearStatements.statements(
-                {k: runs[k] for k in ("EAM", "MAM")}, a_th, short):
-            rows.append(row(f"{r['statement']}: {r['check']}", r["value"],
-                            "-", r["tolerance"],
-                            {reg.PASS: True, reg.FAIL: False}.get(
-                                r["status"]), nr=r.get("reason")))
+        # The paper's statements of App. B (shearStatements.py), judged on
+        # the series the summary keeps (rejudge reads them back)
+        series = {k: runs[k].series(a_th) for k in ("EAM", "MAM")}
+        for k in ("EAM", "MAM"):
+            summary["runs"][k]["series"] = {
+                key: (v.tolist() if hasattr(v, "tolist") else v)
+                for key, v in series[k].items()}
+        rows += statement_rows(series, a_th, gamma,
+                               min(runs[k].tg[-1] for k in ("EAM", "MAM")))
     summary["alpha_band"] = band
     summary["sigma_alpha_rel"] = sig_a
     summary["regression"] = rows
@@ -246,6 +260,43 @@ def fmt(v):
     if v == 0 or 1e-3 <= abs(v) < 1e5:
         return f"{v:.4g}"
     return f"{v:.3e}"
+
+
+def statement_rows(series, a_th, gamma, t_end_g):
+    """The statement rows of App. B (shearStatements.py) in the form of
+    this regression table; n/r where the preset ends before the
+    paper's duration."""
+    short = (f"the paper's statements concern t*gammaDot = "
+             f"{shearStatements.PAPER_END:g}; this preset ends at "
+             f"{t_end_g:g}" if t_end_g < shearStatements.PAPER_END
+             * (1 - 1e-6) else None)
+    return [row(f"{r['statement']}: {r['check']}", r["value"], "-",
+                r["tolerance"], {reg.PASS: True, reg.FAIL: False}.get(
+                    r["status"]), nr=r.get("reason"))
+            for r in shearStatements.statements(series, a_th, short, gamma)]
+
+
+def rejudge(preset, out_dir=None):
+    """The statements judged again on a committed summary.json (its
+    series where written, else its final values: the rows that need the
+    series n/r), summary.json and regression.txt rewritten."""
+    out = Path(out_dir or HERE / "results" / preset)
+    summary = json.loads((out / "summary.json").read_text())
+    runs = summary["runs"]
+    series = {k: shearStatements.from_summary(runs[k], summary["N0"])
+              for k in ("EAM", "MAM")}
+    t_end = min(runs[k]["tGamma_end"] for k in ("EAM", "MAM"))
+    rows = [r for r in summary["regression"]
+            if not re.match(r"S\d+[a-z]*: ", r["check"])]
+    rows += statement_rows(series, summary["alpha_th"], summary["gammaDot"],
+                           t_end)
+    summary["regression"] = rows
+    (out / "summary.json").write_text(json.dumps(summary, indent=2,
+                                                 default=float) + "\n")
+    table = regression_table(preset, rows)
+    (out / "regression.txt").write_text(table + "\n")
+    print(table)
+    return 0 if all(r["status"] != reg.FAIL for r in rows) else 1
 
 
 def regression_table(preset, rows):
@@ -371,4 +422,6 @@ def picture(runs, out):
 
 
 if __name__ == "__main__":
+    if len(sys.argv) == 3 and sys.argv[1] == "rejudge":
+        sys.exit(rejudge(sys.argv[2]))
     sys.exit(post(*sys.argv[1:4]) if len(sys.argv) > 1 else __doc__)

@@ -225,7 +225,9 @@ def post(preset, runs_dir=None, out_dir=None):
         for m in MODELS:
             case = runs_dir / canonical(preset, name, m) / m
             runs[m], entry[m] = run_info(case, a_th)
-        rows = shearStatements.statements(runs, a_th)
+        rows = shearStatements.statements(
+            {m: runs[m].series(a_th) for m in MODELS}, a_th,
+            gamma_dot=float(d["gammaDot"]))
         entry["statements"] = shearStatements.verdicts(rows)
         entry["statementRows"] = rows
         tq = entry["settings"]["fluidTorque"]

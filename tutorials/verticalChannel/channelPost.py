@@ -19,23 +19,14 @@ from pathlib import Path
 import numpy as np
 
 import channel
-from aggloTools import cloud, regression as reg, times
-from aggloTools.foamfile import read_dict
-from aggloTools.stats import last_output, read_stats, read_table
+from aggloTools import regression as reg
+from aggloTools.stats import read_stats
+from channelPlots import picture, plots  # noqa: F401 (channelPost.picture)
 
 HERE = channel.HERE
 
-# AB16 Tab. D.6: f_col, f_agg per model
-TABLE_D6 = {
-    "C1": {"fcol": {"EAM": 8.14e4, "MAM": 7.79e4},
-           "fagg": {"EAM": 6.67e2, "MAM": 5.39e2}},
-    "C2": {"fcol": {"EAM": 5.85e4, "MAM": 5.83e4},
-           "fagg": {"EAM": 1.72e2, "MAM": 1.29e2}},
-    "C3": {"fcol": {"EAM": 3.91e4, "MAM": 3.88e4},
-           "fagg": {"EAM": 1.93e2, "MAM": 1.39e2}},
-    "C4": {"fcol": {"EAM": 1.24e3, "MAM": 1.23e3},
-           "fagg": {"EAM": 2.1e1, "MAM": 1.36e1}},
-}
+# AB16 Tab. D.6 (channel.py)
+TABLE_D6 = channel.TABLE_D6
 # Case ratios (doc/cases.md A.9): numerator, denominator, what it tests
 RATIOS = (("C2", "C1", "with/without sub-models"),
           ("C3", "C2", "rough/smooth wall"),
@@ -138,36 +129,6 @@ def analyse_run(p, adir, cloud):
     return r
 
 
-def read_profiles(p, adir, cloud):
-    """profiles.dat of the last write with per-volume values and the
-    volume fraction based on the geometric slab volumes. Files written
-    before the statistics split cell volumes over the slabs (no 'slab
-    volumes' header line) used the cells whose centre lies in a slab: the
-    counts are recovered from that volume (VSMALL for slabs without a
-    cell centre) and divided by the slab volume; the volume fraction of
-    such empty slabs is unknown (NaN)."""
-    f = last_output(adir, cloud, "profiles.dat")
-    if f is None:
-        return None
-    t = read_table(f)
-    if "slab volumes" in f.read_text()[:400]:
-        return t
-    Lx, Ly, Lz = p["L"]
-    pts = cloud.read_lagrangian(adir / "constant/polyMesh/points")
-    yf = np.unique(np.round(pts[:, 1], 12))
-    yc, dy = 0.5 * (yf[1:] + yf[:-1]), np.diff(yf)
-    nb = len(t["x"])
-    w = (yf[-1] - yf[0]) / nb
-    b = np.minimum(np.floor((yc - yf[0]) / w).astype(int), nb - 1)
-    Vc = np.bincount(b, weights=dy, minlength=nb) * Lx * Lz
-    Vg = np.full(nb, w * Lx * Lz)
-    Vused = np.where(Vc > 0, Vc, 1e-300)
-    for c in ("nColPerVolume", "nColFirstPerVolume", "nAggPerVolume"):
-        t[c] = t[c] * Vused / Vg
-    t["alpha"] = np.where(Vc > 0, t["alpha"] * Vc / Vg, np.nan)
-    return t
-
-
 def step_values(log, pattern):
     """The values of a pattern in a solver log, every match of every time
     step in order; a run resumed with -append repeats the steps after its
@@ -209,9 +170,11 @@ def ratio(a, sa, b, sb):
 
 
 def R(quantity, sim, sigma, paper, tolerance, status, note):
-    """A regression row."""
+    """A regression row, with sim/paper where both are known."""
+    factor = (sim / paper if sim is not None and paper else None)
     return dict(quantity=quantity, sim=sim, sigma=sigma, paper=paper,
-                tolerance=tolerance, status=status, note=note)
+                factor=factor, tolerance=tolerance, status=status,
+                note=note)
 
 
 def regression(p, res):
@@ -271,6 +234,18 @@ def regression(p, res):
                              reg.NR, "not gated at this preset: " + events
                              if ref_q is not None else
                              "no published value: " + events))
+        # alpha_f = f_agg/f_col (no scaling), with its propagated sigma
+        a = r["alpha_f"]
+        sa = (a * math.hypot(r["sigma_col"] / r["f_col"],
+                             r["sigma_agg"] / r["f_agg"])
+              if a and r["f_agg"] > 0 else None)
+        ref_a = (ref["fagg"][m] / ref["fcol"][m]) if ref else None
+        if p["name"] == "paper" and ref_a is not None and a:
+            add(f"{c} {m} alpha_f", a, sa, ref_a, "", ABS_TOL["agg"])
+        else:
+            rows.append(R(f"{c} {m} alpha_f = f_agg/f_col", a, sa, ref_a,
+                         None, reg.NR, "not gated at this preset"
+                         if ref_a is not None else "no published value"))
     # case ratios against the paper's
     for a, b, what in RATIOS:
         for m in models:
@@ -351,13 +326,41 @@ COLUMNS = [reg.Column("quantity", "quantity", 44),
            reg.Column("sim", "sim", 11, ">", fmt),
            reg.Column("sigma", "sigma", 11, ">", fmt),
            reg.Column("paper", "paper", 11, ">", fmt),
+           reg.Column("sim/paper", "factor", 10, ">", fmt),
            reg.Column("tolerance", "tolerance", 11, ">", fmt),
            reg.Column("status", "status", 6),
            reg.Column("note", "note", gap="  ")]
 
 
+#: What each preset resolves (README.md, "Presets"; the regime study)
+RESOLVES = {
+    "smoke": "nothing of the physics: it checks the stages, IO,"
+             " decomposition and conservation",
+    "small": "not the paper's regime: C1 f_col x s^2 about 13 times below"
+             " Table 3, alpha_f about 30 times above, collisions in the"
+             " bulk; only conservation is judged, the rest is reported",
+    "medium": "the case ratios but the C4 agglomeration ratios (by the"
+              " counts' noise); whether it is in the paper's regime is the"
+              " regime study's question",
+    "paper": "everything (the paper's size)",
+}
+
+
+def report_head(p):
+    """The report's first lines: what the preset resolves, and where the
+    regime study's results are."""
+    what = RESOLVES.get(p["name"], "see the regime study (one shortcut of"
+                        " small changed)")
+    return [f"What preset {p['name']} resolves: {what}.",
+            "Which preset reaches the paper's regime: the regime study,"
+            " results/regime/regime.txt (README.md, 'The regime study');"
+            " its runs: ../../.venv/bin/python channelRegime.py run -np 2,"
+            " then post.", ""]
+
+
 def write_regression(path, p, rows, fluid):
-    lines = [f"verticalChannel regression, preset {p['name']}:"
+    lines = report_head(p) + [
+             f"verticalChannel regression, preset {p['name']}:"
              f" N = {p['nParticles']:g} per cloud, frequencies by Eq. 87"
              f" over T*agg = {p['window'][0]:g}-{p['window'][1]:g},",
              f"scaled to the paper by s^2 = (6e6/N)^2 ="
@@ -382,177 +385,53 @@ def write_regression(path, p, rows, fluid):
     return n[reg.FAIL]
 
 
-# ----------------------------------------------------------------- plots
-
-def plots(out, p, res, runs):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import matplotlib.ticker  # noqa: F401
-
-    keys = sorted(res)
-    # time histories
-    fig, ax = plt.subplots(2, 2, figsize=(11, 8))
-    for k in keys:
-        s = res[k]["_series"]
-        lab = f"{k[0]} {k[1]}"
-        ax[0, 0].plot(s["T"], s["nCol"], label=lab)
-        ax[0, 1].plot(s["T"], s["nAgg"], label=lab)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            ax[1, 0].plot(s["T"], np.where(s["nCol"] > 0,
-                                           s["nAgg"] / s["nCol"], np.nan),
-                          label=lab)
-        ax[1, 1].plot(s["T"], s["Npp"], label=lab)
-    for a, yl in zip(ax.flat, ("$N_{col}$", "$N_{agg}$",
-                               r"$\alpha = N_{agg}/N_{col}$", "$N_{pp}$")):
-        a.set_xlabel(r"$T^*_{agg}$")
-        a.set_ylabel(yl)
-        a.axvspan(*p["window"], color="0.92", zorder=0)
-        a.grid(alpha=0.3)
-    ax[0, 0].legend(fontsize=8)
-    fig.suptitle(f"verticalChannel {p['name']}: time histories"
-                 " (grey: Eq. 87 window)")
-    fig.tight_layout()
-    fig.savefig(out / "history.png", dpi=110)
-    plt.close(fig)
-
-    # agglomerate sizes at the end
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    width = 0.8 / max(1, len(keys))
-    for i, k in enumerate(keys):
-        f = last_output(*runs[k], "agglomerateSizes.dat")
-        if f is None:
-            continue
-        t = read_table(f)
-        if len(t["k"]):
-            ax.bar(t["k"] + (i - len(keys) / 2) * width, t["count"],
-                   width=width, label=f"{k[0]} {k[1]}")
-    ax.set_xlabel("primaries per agglomerate")
-    ax.set_ylabel("$N_a$")
-    ax.set_yscale("log")
-    ax.legend(fontsize=8)
-    ax.set_title("agglomerates per size at the end of the stage")
-    fig.tight_layout()
-    fig.savefig(out / "agglomerateSizes.png", dpi=110)
-    plt.close(fig)
-
-    # wall-normal profiles
-    d = p["delta"]
-    nu = float(read_dict(HERE / "constant/transportProperties")
-               ["nu"])
-    fig, ax = plt.subplots(2, 3, figsize=(15, 8))
-    fig2, ax2 = plt.subplots(1, 2, figsize=(11, 4.5))
-    for k in keys:
-        t = read_profiles(p, *runs[k])
-        if t is None:
-            continue
-        y = t["x"] / d - 1
-        lab = f"{k[0]} {k[1]}"
-        ax[0, 0].plot(y, t["nColPerVolume"], label=lab)
-        ax[0, 1].plot(y, t["nAggPerVolume"], label=lab)
-        ax[0, 2].plot(y, t["aggRate"], label=lab)
-        ut = res[k].get("uTau") or 0.0484
-        yp = np.minimum(t["x"], 2 * d - t["x"]) * ut / nu
-        ax[1, 0].semilogx(yp[y < 0], t["alpha"][y < 0], label=lab)
-        ax[1, 1].plot(y, t["meanD"] / d, label=lab)
-        ax[1, 2].plot(y, t["Ux"] / p["Ubar"], label=lab)
-        ax2[0].plot(y, np.sqrt(np.maximum(t["uu"], 0)) / p["Ubar"],
-                    label=f"{lab} u'")
-        ax2[0].plot(y, np.sqrt(np.maximum(t["vv"], 0)) / p["Ubar"], "--",
-                    label=f"{lab} v'")
-        ax2[1].plot(y, t["uv"] / p["Ubar"]**2, label=lab)
-    for a, yl in zip(ax.flat, (
-            r"$\langle N_{col}\rangle$ per volume",
-            r"$\langle N_{agg}\rangle$ per volume",
-            r"$\langle N_{agg}\rangle/\langle N_{col}\rangle$",
-            "particle volume fraction", r"mean diameter $/\delta$",
-            r"particle $\langle u\rangle/U_B$")):
-        a.set_ylabel(yl)
-        a.set_xlabel(r"$y/\delta$")
-        a.grid(alpha=0.3)
-    ax[1, 0].set_xlabel(r"$y^+$ (lower half)")
-    ax[1, 0].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-    ax[0, 0].legend(fontsize=8)
-    fig.suptitle(f"verticalChannel {p['name']}: wall-normal profiles over"
-                 " the agglomeration stage (Eqs. 86, 88)")
-    fig.tight_layout()
-    fig.savefig(out / "profiles.png", dpi=110)
-    plt.close(fig)
-    ax2[0].set_ylabel(r"particle rms velocity $/U_B$")
-    ax2[1].set_ylabel(r"particle $\langle u'v'\rangle/U_B^2$")
-    for a in ax2:
-        a.set_xlabel(r"$y/\delta$")
-        a.grid(alpha=0.3)
-    ax2[0].legend(fontsize=7)
-    fig2.tight_layout()
-    fig2.savefig(out / "particleVelocity.png", dpi=110)
-    plt.close(fig2)
-
-
-def picture(out, p, runs):
-    """pyvista picture of the first finished run's last time, from its
-    legacy positions or, where the preset writes none, from the
-    barycentric coordinates and the mesh; a run without particles to draw
-    is named, never skipped silently. Returns the picture's path (None:
-    none drawn, and said why)."""
-    from aggloTools import render
-    for (c, m), (adir, cname) in sorted(runs.items()):
-        t = times.time_dirs(adir)[-1]
-        cdir = t / "lagrangian" / cname
-        if not any((cdir / f).exists() for f in ("positions",
-                                                 "coordinates")):
-            print(f"channelPost: no particle picture of {c} {m}: {cdir} "
-                  "holds neither positions nor coordinates")
-            continue
-        x = cloud.cloud_positions(adir, t.name, cname)
-        n = cloud.read_lagrangian(cdir / "nPrimary")
-        if not len(x):
-            print(f"channelPost: no particle picture of {c} {m}: no "
-                  f"particles at {t}")
-            continue
-        Lx, Ly, Lz = p["L"]
-        png = out / f"particles{c}{m}.png"
-        render.particles_picture(
-            png, x, n, (0, Lx, 0, Ly, 0, Lz),
-            title=f"verticalChannel {p['name']} {c} {m}: T*agg ="
-                  f" {res_time(p, t):.3g}, {len(x)} particles,"
-                  f" {int((n > 1).sum())} agglomerates")
-        return png
-    print("channelPost: no particle picture: no finished run has particles"
-          " to draw")
-    return None
-
-
-def res_time(p, t):
-    return (float(t.name) - channel.end_time(p, "dispersion")) / p["tScale"]
-
-
 # ------------------------------------------------------------------ post
 
 def compare(rows, ref_file):
     """The text comparing a report's regression rows with the committed
-    reference's (same check: value and status then and now)."""
+    reference's: each value against the reference's with both sigmas
+    (z = difference / combined sigma; they agree within 3), and the
+    status then and now."""
     if not ref_file.is_file():
         return f"no committed reference {ref_file}"
     ref = {r["quantity"]: r for r in json.loads(ref_file.read_text())
            .get("regression", [])}
     lines = [f"This report against the committed reference {ref_file}:",
-             f"{'check':<58} {'value':>11} {'reference':>11}  status"
-             "  (reference)"]
-    same = 0
+             f"{'check':<52} {'value':>10} {'sigma':>9} {'reference':>10}"
+             f" {'sigma':>9} {'z':>6}  agree  status (reference)"]
+
     def val(x):
         return f"{x:.4g}" if isinstance(x, (int, float)) else "-"
 
+    n = {"agree": 0, "differ": 0, "-": 0}
+    same = 0
     for r in rows:
         o = ref.get(r["quantity"])
         if o is None:
-            lines.append(f"{r['quantity'][:58]:<58} {val(r['sim']):>11} "
-                         f"{'-':>11}  {r['status']}  (not in the reference)")
+            lines.append(f"{r['quantity'][:52]:<52} {val(r['sim']):>10} "
+                         f"{val(r['sigma']):>9} {'-':>10} {'-':>9} {'-':>6}"
+                         f"  -      {r['status']} (not in the reference)")
+            n["-"] += 1
             continue
         same += o["status"] == r["status"]
-        lines.append(f"{r['quantity'][:58]:<58} {val(r['sim']):>11} "
-                     f"{val(o['sim']):>11}  {r['status']}  ({o['status']})")
-    lines.append(f"{same} of {len(rows)} rows with the reference's status")
+        z, verdict = None, "-"
+        if all(isinstance(x, (int, float)) for x in
+               (r["sim"], o["sim"])):
+            s = math.hypot(r["sigma"] or 0.0, o.get("sigma") or 0.0)
+            if s > 0:
+                z = (r["sim"] - o["sim"]) / s
+                verdict = "agree" if abs(z) <= 3 else "differ"
+            else:
+                verdict = "agree" if r["sim"] == o["sim"] else "differ"
+        n[verdict] += 1
+        lines.append(f"{r['quantity'][:52]:<52} {val(r['sim']):>10} "
+                     f"{val(r['sigma']):>9} {val(o['sim']):>10} "
+                     f"{val(o.get('sigma')):>9} {val(z):>6}  {verdict:<6} "
+                     f"{r['status']} ({o['status']})")
+    lines.append(f"{n['agree']} of {len(rows)} rows agree with the "
+                 f"reference within 3 combined sigma, {n['differ']} differ,"
+                 f" {n['-']} not comparable; {same} with the reference's "
+                 "status")
     return "\n".join(lines)
 
 

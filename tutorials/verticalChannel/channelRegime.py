@@ -19,7 +19,6 @@ names the missing ones."""
 
 import argparse
 import json
-import math
 import subprocess
 import sys
 from pathlib import Path
@@ -43,9 +42,9 @@ VARIANTS = (
     ("regime32n3", "3e5 particles at 32^3 and the paper's phases"),
 )
 MODELS = ("EAM", "MAM")
-#: AB16 Table 3 / D.6, C1
-PAPER = {"f_col_scaled": {"EAM": 8.14e4, "MAM": 7.79e4},
-         "f_agg_scaled": {"EAM": 6.67e2, "MAM": 5.39e2},
+#: AB16 Table 3 / D.6 (channel.TABLE_D6), C1, and the paper's u_tau/U_B
+PAPER = {"f_col_scaled": channel.TABLE_D6["C1"]["fcol"],
+         "f_agg_scaled": channel.TABLE_D6["C1"]["fagg"],
          "u_tau_over_U_B": 0.053}
 #: Quantiles reported of the distributions at contact
 QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)

@@ -204,7 +204,9 @@ def test_ci_study_counts(ci_study):
     ci = json.loads((tut / "results/ci/summary.json").read_text())
     ref = ci["runs"]
     for v in study["variants"]:
-        assert set(v["statements"]) == {"S1", "S1b", "S2", "S3", "S4"}
+        assert set(v["statements"]) == {"S1", "S1d", "S1b", "S1c", "S2",
+                                        "S3", "S4", "S4b", "S5", "S6",
+                                        "S7", "S8"}
         assert set(v["statements"].values()) <= {"PASS", "FAIL", "n/r"}
         for m in ("EAM", "MAM"):
             r = v[m]

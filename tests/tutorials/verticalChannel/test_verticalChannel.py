@@ -43,7 +43,8 @@ def run_smoke(tmp, np_):
         shutil.rmtree(case)
     case.mkdir(parents=True)
     for name in ("0.orig", "constant", "system", "presets", "channel.py",
-                 "channelPost.py", "channelReplay.py", "Allrun",
+                 "channelPost.py", "channelPlots.py", "channelReplay.py",
+                 "channelRegime.py", "Allrun",
                  "Allclean"):
         src = TUTORIAL / name
         (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)
@@ -61,6 +62,14 @@ def run_smoke(tmp, np_):
 def smoke_runs(foam_env):
     tmp = RUNS / "test_verticalChannel"
     return {n: run_smoke(tmp, n) for n in (1, 2)}
+
+
+def script(name):
+    """A script of the tutorial as a module, after the siblings it
+    imports (channel, channelPlots, channelPost)."""
+    for sibling in ("channel", "channelPlots", "channelPost"):
+        tutorial_module("verticalChannel", sibling)
+    return tutorial_module("verticalChannel", name)
 
 
 def agg_runs(case):
@@ -297,8 +306,7 @@ def test_resumed_log_counts_each_step_once():
     """A run resumed with -append repeats the steps after its last write
     in the log: the u_tau check reads each step's gradients once, the
     resumed run's (channelPost.step_values)."""
-    tutorial_module("verticalChannel", "channel")
-    post = tutorial_module("verticalChannel", "channelPost")
+    post = script("channelPost")
     steps = [(1, [10, 11]), (2, [20, 21]), (3, [30, 31]),     # killed
              (2, [22, 23]), (3, [32, 33]), (4, [40, 41])]     # resumed
     log = "".join(f"Time = {t}\n" + "".join(
@@ -312,7 +320,7 @@ def test_picture_without_legacy_positions(smoke_runs, tmp_path, capsys):
     """A run that writes no legacy positions (the paper preset) still gets
     its particle picture, drawn from the barycentric coordinates and the
     mesh at the same places; a run with neither file is named."""
-    post = tutorial_module("verticalChannel", "channelPost")
+    post = script("channelPost")
     src = agg_runs(smoke_runs[1])[("C1", "EAM")]
     adir = tmp_path / "agglomeration"
     shutil.copytree(src, adir, ignore=shutil.ignore_patterns(
@@ -338,9 +346,7 @@ def test_regime_study_post(smoke_runs, tmp_path):
     window), the particle concentration at the start of agglomeration is
     that of the uniform release (near-wall over centre within 3 sigma of
     1, Poisson), and a variant not run is reported as such, not guessed."""
-    tutorial_module("verticalChannel", "channel")
-    tutorial_module("verticalChannel", "channelPost")
-    regime = tutorial_module("verticalChannel", "channelRegime")
+    regime = script("channelRegime")
     runs = smoke_runs[2] / "runs"
     res = regime.run_post(runs, tmp_path, ["smoke", "regime32"])
     smoke, missing = res["variants"]
@@ -366,3 +372,31 @@ def test_regime_study_post(smoke_runs, tmp_path):
     assert (tmp_path / "regime.png").stat().st_size > 10000
     assert json.loads((tmp_path / "regime.json").read_text())[
         "variants"][0]["result"]["models"]["EAM"]["f_col_scaled"] > 0
+
+
+def test_report_head_factors_and_comparison(smoke_runs):
+    """The report says first what its preset resolves and where the
+    regime study is; every row with a published value carries sim/paper;
+    the comparison with another report weighs each value against both
+    sigmas: the serial and 2-rank C1 runs (no random numbers) agree
+    exactly (z = 0), and nothing differs beyond 3 sigma."""
+    post = script("channelPost")
+    rep = {n: smoke_runs[n] / "runs" / "smoke" / "report" for n in (1, 2)}
+    lines = (rep[2] / "regression.txt").read_text().splitlines()
+    assert lines[0].startswith("What preset smoke resolves: nothing of")
+    assert "results/regime" in lines[1] and "channelRegime.py" in lines[1]
+    rows = json.loads((rep[2] / "summary.json").read_text())["regression"]
+    with_paper = [r for r in rows if r["sim"] is not None and r["paper"]]
+    assert len(with_paper) >= 12
+    for r in with_paper:
+        assert r["factor"] == pytest.approx(r["sim"] / r["paper"],
+                                            rel=1e-12)
+    assert any(r["quantity"] == "C1 EAM alpha_f = f_agg/f_col"
+               and r["paper"] == pytest.approx(6.67e2 / 8.14e4)
+               for r in rows)
+    text = post.compare(rows, rep[1] / "summary.json")
+    c1 = [line for line in text.splitlines()
+          if line.startswith("C1 ") and " f_col x s^2" in line]
+    assert len(c1) == 2 and all(" 0 " in line and "agree" in line
+                                for line in c1), c1
+    assert " 0 differ" in text.splitlines()[-1], text.splitlines()[-1]

@@ -351,6 +351,25 @@ def test_log_cut_back_by_an_earlier_run_is_refused(case_dir, foam_env):
     assert n > 20 and re.search(rf"nEvents\s+{n};", rec)
 
 
+@pytest.mark.parametrize("keep", [0, 0.5])
+def test_cut_off_log_record_is_refused(case_dir, foam_env, keep):
+    """The log's record of a written time (nEvents) empty or cut off: the
+    count cannot be checked, so the restart stops naming it (it was read
+    as absent, and the run continued unchecked)."""
+    c = gas(case_dir / "gas")
+    run_case(c)
+    rec = (c / "0.004" / "uniform" / "lagrangian" / "kinematicCloud"
+           / "collisionEventLog")
+    text = rec.read_bytes()
+    rec.write_bytes(text[:int(keep * len(text))])
+    run([foam_bin("foamDictionary"), "system/controlDict", "-entry",
+         "endTime", "-set", "0.005"], c, "log.fd")
+    res = run([foam_bin("aggloPimpleFoam")], c, "log.restart", check=False)
+    assert res.returncode != 0, res.stdout[-1500:]
+    assert "empty or cut off" in res.stdout and "collisionEventLog" in \
+        res.stdout, res.stdout[-1500:]
+
+
 def test_per_event_output(case_dir, foam_env):
     """-eventsOut: one line per event; the run's own kernel gives every
     logged outcome; the pair state is the log's (u_n from the logged

@@ -20,7 +20,11 @@ using namespace aggloTest;
 namespace
 {
 
-collisionEvent sample(const label k)
+//- A record of every field; extreme: values at the limits of a double
+//  (the byte round trip keeps them exactly), else within the bounds of a
+//  valid record that the file reader checks (a velocity of 1e300 is
+//  refused there as corrupt)
+collisionEvent sample(const label k, const bool extreme = false)
 {
     collisionEvent e;
     e.timeIndex = 100 + k/3;
@@ -39,7 +43,7 @@ collisionEvent sample(const label k)
     );
     e.p2 = hardSphereState
     (
-        point(0.25, 0.5, 0.75), vector(-1e-3, 0.5, 1e300),
+        point(0.25, 0.5, 0.75), vector(-1e-3, 0.5, extreme ? 1e300 : 1e3),
         vector(0, 1, 2), 24e-6*(1 + k), 2200, 8 + k
     );
     e.wallDistance = 3.5e-5;
@@ -89,7 +93,7 @@ TEST(CollisionEvent, PackUnpackExact)
     buf[collisionEvent::recordBytes] = 'z';
     for (label k = 0; k < 7; ++k)
     {
-        const collisionEvent e(sample(k));
+        const collisionEvent e(sample(k, true));
         e.pack(buf);
         collisionEvent f;
         f.unpack(buf);

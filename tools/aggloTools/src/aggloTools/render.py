@@ -19,11 +19,16 @@ def _offscreen_window():
 def particles_picture(path, positions, colour, bounds, title="",
                       colour_name="primaries per agglomerate",
                       single_size=2.0, cluster_size=9.0, camera=None,
-                      window=(1600, 1000)):
+                      window=(1600, 1000), axes=None, walls=(),
+                      arrow=None):
     """Render particles at positions as points coloured by colour (the
     number of primaries): single primaries (colour 1) as small grey points,
     agglomerates as large points on a colour scale; the box outline is given
-    by bounds (xmin, xmax, ymin, ymax, zmin, zmax). Writes a PNG file."""
+    by bounds (xmin, xmax, ymin, ymax, zmin, zmax). axes: the titles of
+    the x, y, z axes (ticks and labels drawn); walls: (axis, position)
+    planes drawn translucent (axis 0, 1, 2); arrow: (start, direction,
+    label) drawn as an arrow with its label (a flow direction). Writes a
+    PNG file."""
     _offscreen_window()
     import pyvista as pv
     pv.OFF_SCREEN = True
@@ -45,12 +50,37 @@ def particles_picture(path, positions, colour, bounds, title="",
                     render_points_as_spheres=True,
                     scalar_bar_args={"title": colour_name,
                                      "color": "black"})
+    lo, hi = np.array(bounds[0::2], float), np.array(bounds[1::2], float)
+    for axis, pos in walls:
+        # the wall as the quad of the box's face at pos
+        a, b = [k for k in range(3) if k != axis]
+        corners = []
+        for u, v in ((lo[a], lo[b]), (hi[a], lo[b]), (hi[a], hi[b]),
+                     (lo[a], hi[b])):
+            q = np.empty(3)
+            q[axis], q[a], q[b] = pos, u, v
+            corners.append(q)
+        pl.add_mesh(pv.PolyData(np.array(corners), faces=[4, 0, 1, 2, 3]),
+                    color="steelblue", opacity=0.3)
+    if arrow:
+        start, direction, label = arrow
+        d = np.asarray(direction, float)
+        pl.add_mesh(pv.Arrow(start=start, direction=d,
+                             scale=float(np.linalg.norm(d))), color="red")
+        pl.add_point_labels([np.asarray(start) + d], [label],
+                            font_size=14, text_color="red",
+                            shape_opacity=0.0, show_points=False)
+    if axes:
+        pl.show_bounds(bounds=bounds, xtitle=axes[0], ytitle=axes[1],
+                       ztitle=axes[2], color="black", font_size=10,
+                       location="outer", fmt="%.3f")
     if title:
         pl.add_text(title, font_size=11, color="black")
     if camera:
         pl.camera_position = camera
     else:
         pl.view_isometric()
-        pl.camera.zoom(1.2)
+        # room for the axes' ticks and titles where they are drawn
+        pl.camera.zoom(0.95 if axes else 1.2)
     pl.screenshot(str(path))
     pl.close()

@@ -182,6 +182,22 @@ bool Foam::AgglomerateParcel<ParcelType>::move
 }
 
 
+// A copy, with changes, of KinematicParcel<ParcelType>::move of OpenFOAM
+// v1912 (src/lagrangian/intermediate/parcels/Templates/KinematicParcel/
+// KinematicParcel.C): the same sub-steps (maxCo limits on time and
+// distance, setCellValues, calcDispersion, cellValueSourceCorrection, calc,
+// age, postFace, postMove, hitFace), in the same order. What differs:
+//   - a parcel completed in an earlier pass of the cloud's move returns at
+//     once;
+//   - the position is kept in x from the track's own displacement (the
+//     fraction trackToFace leaves) instead of being computed with
+//     position() at each sub-step, starting from the stage's start
+//     position (the last collision stage's end position);
+//   - a cyclic face hit moves x with the parcel (translated, or computed
+//     again after a rotation);
+//   - a completed track reports its end position to the collision model
+//     (trackedTo).
+// An upgrade of OpenFOAM must compare this function with the new move().
 template<class ParcelType>
 template<class TrackCloudType>
 bool Foam::AgglomerateParcel<ParcelType>::trackLinear

@@ -152,7 +152,17 @@ Foam::collisionEventLog::collisionEventLog
     // run's end are from the older run
     IOobject io(recordIO(mesh, cloudName, IOobject::MUST_READ));
     const label nHeld = returnReduce(nInFile_ + nOthers_, sumOp<label>());
-    if (io.typeHeaderOk<IOdictionary>(true))
+    const bool readable = io.typeHeaderOk<IOdictionary>(true);
+    if (!readable && isFile(io.objectPath()))
+    {
+        // Written, but empty or cut off: the count cannot be checked
+        FatalErrorInFunction
+            << "The record " << io.objectPath() << " of the collision-event"
+            << " log is empty or cut off: the events logged up to time "
+            << mesh.time().timeName() << " cannot be checked. Restart from"
+            << " an earlier time" << exit(FatalError);
+    }
+    if (readable)
     {
         const label nRecorded = IOdictionary(io).get<label>("nEvents");
         if (nHeld != nRecorded)

@@ -1,0 +1,220 @@
+"""verticalChannel: the report's pictures (channelPost.py writes them):
+time histories with the paper's rates, agglomerate sizes, wall-normal
+profiles, particle velocities and the pyvista picture of the particles."""
+
+import numpy as np
+
+import channel
+from aggloTools import cloud, times
+from aggloTools.foamfile import read_dict
+from aggloTools.stats import last_output, read_table
+
+HERE = channel.HERE
+TABLE_D6 = channel.TABLE_D6
+
+
+def read_profiles(p, adir, cloud):
+    """profiles.dat of the last write with per-volume values and the
+    volume fraction based on the geometric slab volumes. Files written
+    before the statistics split cell volumes over the slabs (no 'slab
+    volumes' header line) used the cells whose centre lies in a slab: the
+    counts are recovered from that volume (VSMALL for slabs without a
+    cell centre) and divided by the slab volume; the volume fraction of
+    such empty slabs is unknown (NaN)."""
+    f = last_output(adir, cloud, "profiles.dat")
+    if f is None:
+        return None
+    t = read_table(f)
+    if "slab volumes" in f.read_text()[:400]:
+        return t
+    Lx, Ly, Lz = p["L"]
+    pts = cloud.read_lagrangian(adir / "constant/polyMesh/points")
+    yf = np.unique(np.round(pts[:, 1], 12))
+    yc, dy = 0.5 * (yf[1:] + yf[:-1]), np.diff(yf)
+    nb = len(t["x"])
+    w = (yf[-1] - yf[0]) / nb
+    b = np.minimum(np.floor((yc - yf[0]) / w).astype(int), nb - 1)
+    Vc = np.bincount(b, weights=dy, minlength=nb) * Lx * Lz
+    Vg = np.full(nb, w * Lx * Lz)
+    Vused = np.where(Vc > 0, Vc, 1e-300)
+    for c in ("nColPerVolume", "nColFirstPerVolume", "nAggPerVolume"):
+        t[c] = t[c] * Vused / Vg
+    t["alpha"] = np.where(Vc > 0, t["alpha"] * Vc / Vg, np.nan)
+    return t
+
+
+# ----------------------------------------------------------------- plots
+
+def plots(out, p, res, runs):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import matplotlib.ticker  # noqa: F401
+
+    keys = sorted(res)
+    s2 = (channel.N_PAPER / p["nParticles"])**2
+    w0, w1 = p["window"]
+    # time histories, with the paper's rates (Table D.6, scaled to this
+    # preset's particles by 1/s^2) over the window where it gives them
+    fig, ax = plt.subplots(2, 2, figsize=(11, 8))
+    for i, k in enumerate(keys):
+        s = res[k]["_series"]
+        lab = f"{k[0]} {k[1]}"
+        colour = f"C{i}"
+        ax[0, 0].plot(s["T"], s["nCol"], label=lab, color=colour)
+        ax[0, 1].plot(s["T"], s["nAgg"], label=lab, color=colour)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ax[1, 0].plot(s["T"], np.where(s["nCol"] > 0,
+                                           s["nAgg"] / s["nCol"], np.nan),
+                          label=lab, color=colour)
+        ax[1, 1].plot(s["T"], s["Npp"], label=lab, color=colour)
+        ref = TABLE_D6.get(k[0])
+        if ref:
+            for a, q, n in ((ax[0, 0], "fcol", s["nCol"]),
+                            (ax[0, 1], "fagg", s["nAgg"])):
+                n0 = float(np.interp(w0, s["T"], n))
+                a.plot([w0, w1], [n0, n0 + ref[q][k[1]] / s2 * (w1 - w0)],
+                       "--", color=colour, lw=0.9,
+                       label=f"paper {lab} (rate / s^2)")
+            ax[1, 0].axhline(ref["fagg"][k[1]] / ref["fcol"][k[1]],
+                             ls="--", color=colour, lw=0.9,
+                             label=f"paper {lab} alpha_f")
+    for a, yl in zip(ax.flat, (r"collisions $N_{col}$ [-]",
+                               r"agglomerations $N_{agg}$ [-]",
+                               r"$\alpha = N_{agg}/N_{col}$ [-]",
+                               r"primaries in agglomerates $N_{pp}$ [-]")):
+        a.set_xlabel(r"$T^*_{agg} = t\,U_B/\delta$ since the start of"
+                     " agglomeration [-]")
+        a.set_ylabel(yl)
+        a.axvspan(w0, w1, color="0.92", zorder=0)
+        a.grid(alpha=0.3)
+    ax[0, 0].legend(fontsize=7)
+    ax[1, 0].legend(fontsize=7)
+    fig.suptitle(f"verticalChannel {p['name']}: time histories"
+                 " (grey: Eq. 87 window; dashed: the paper)")
+    fig.tight_layout()
+    fig.savefig(out / "history.png", dpi=110)
+    plt.close(fig)
+
+    # agglomerate sizes at the end
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    width = 0.8 / max(1, len(keys))
+    kmax = 2
+    for i, k in enumerate(keys):
+        f = last_output(*runs[k], "agglomerateSizes.dat")
+        if f is None:
+            continue
+        t = read_table(f)
+        if len(t["k"]):
+            # each run's bar inside its size's integer bin
+            ax.bar(t["k"] - 0.4 + (i + 0.5) * width, t["count"],
+                   width=width, label=f"{k[0]} {k[1]}", color=f"C{i}")
+            kmax = max(kmax, int(np.max(t["k"])))
+    ax.set_xticks(range(2, kmax + 1))
+    ax.set_xlim(1.5, kmax + 0.5)
+    ax.set_xlabel("primaries per agglomerate [-]")
+    ax.set_ylabel("agglomerates $N_a$ [-]")
+    ax.set_yscale("log")
+    ax.set_ylim(bottom=0.5)
+    ax.legend(fontsize=8)
+    ax.set_title("agglomerates per size at the end of the stage")
+    fig.tight_layout()
+    fig.savefig(out / "agglomerateSizes.png", dpi=110)
+    plt.close(fig)
+
+    # wall-normal profiles
+    d = p["delta"]
+    nu = float(read_dict(HERE / "constant/transportProperties")
+               ["nu"])
+    fig, ax = plt.subplots(2, 3, figsize=(15, 8))
+    fig2, ax2 = plt.subplots(1, 2, figsize=(11, 4.5))
+    for k in keys:
+        t = read_profiles(p, *runs[k])
+        if t is None:
+            continue
+        y = t["x"] / d - 1
+        lab = f"{k[0]} {k[1]}"
+        ax[0, 0].plot(y, t["nColPerVolume"], label=lab)
+        ax[0, 1].plot(y, t["nAggPerVolume"], label=lab)
+        ax[0, 2].plot(y, t["aggRate"], label=lab)
+        ut = res[k].get("uTau") or 0.0484
+        yp = np.minimum(t["x"], 2 * d - t["x"]) * ut / nu
+        ax[1, 0].semilogx(yp[y < 0], t["alpha"][y < 0], label=lab)
+        ax[1, 1].plot(y, t["meanD"] / d, label=lab)
+        ax[1, 2].plot(y, t["Ux"] / p["Ubar"], label=lab)
+        ax2[0].plot(y, np.sqrt(np.maximum(t["uu"], 0)) / p["Ubar"],
+                    label=f"{lab} u'")
+        ax2[0].plot(y, np.sqrt(np.maximum(t["vv"], 0)) / p["Ubar"], "--",
+                    label=f"{lab} v'")
+        ax2[1].plot(y, t["uv"] / p["Ubar"]**2, label=lab)
+    for a, yl in zip(ax.flat, (
+            r"$\langle N_{col}\rangle$ per volume [m$^{-3}$]",
+            r"$\langle N_{agg}\rangle$ per volume [m$^{-3}$]",
+            r"$\langle N_{agg}\rangle/\langle N_{col}\rangle$ [-]",
+            "particle volume fraction [-]", r"mean diameter $/\delta$ [-]",
+            r"particle $\langle u\rangle/U_B$ [-]")):
+        a.set_ylabel(yl)
+        a.set_xlabel(r"$y/\delta$ [-]")
+        a.grid(alpha=0.3)
+    ax[1, 0].set_xlabel(r"$y^+$ (lower half) [-]")
+    ax[1, 0].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax[0, 0].legend(fontsize=8)
+    fig.suptitle(f"verticalChannel {p['name']}: wall-normal profiles over"
+                 " the agglomeration stage (Eqs. 86, 88)")
+    fig.tight_layout()
+    fig.savefig(out / "profiles.png", dpi=110)
+    plt.close(fig)
+    ax2[0].set_ylabel(r"particle rms velocity $/U_B$ [-]")
+    ax2[1].set_ylabel(r"particle $\langle u'v'\rangle/U_B^2$ [-]")
+    for a in ax2:
+        a.set_xlabel(r"$y/\delta$ [-]")
+        a.grid(alpha=0.3)
+    ax2[0].legend(fontsize=7)
+    fig2.tight_layout()
+    fig2.savefig(out / "particleVelocity.png", dpi=110)
+    plt.close(fig2)
+
+
+def picture(out, p, runs):
+    """pyvista picture of the first finished run's last time, from its
+    legacy positions or, where the preset writes none, from the
+    barycentric coordinates and the mesh; a run without particles to draw
+    is named, never skipped silently. Returns the picture's path (None:
+    none drawn, and said why)."""
+    from aggloTools import render
+    for (c, m), (adir, cname) in sorted(runs.items()):
+        t = times.time_dirs(adir)[-1]
+        cdir = t / "lagrangian" / cname
+        if not any((cdir / f).exists() for f in ("positions",
+                                                 "coordinates")):
+            print(f"channelPost: no particle picture of {c} {m}: {cdir} "
+                  "holds neither positions nor coordinates")
+            continue
+        x = cloud.cloud_positions(adir, t.name, cname)
+        n = cloud.read_lagrangian(cdir / "nPrimary")
+        if not len(x):
+            print(f"channelPost: no particle picture of {c} {m}: no "
+                  f"particles at {t}")
+            continue
+        Lx, Ly, Lz = p["L"]
+        png = out / f"particles{c}{m}.png"
+        render.particles_picture(
+            png, x, n, (0, Lx, 0, Ly, 0, Lz),
+            title=f"verticalChannel {p['name']} {c} {m}: T*agg ="
+                  f" {res_time(p, t):.3g}, {len(x)} particles,"
+                  f" {int((n > 1).sum())} agglomerates",
+            axes=("x (flow, gravity) [m]", "y (wall-normal) [m]",
+                  "z (spanwise) [m]"),
+            walls=((1, 0.0), (1, Ly)),
+            arrow=((0.1 * Lx, 0.5 * Ly, 1.15 * Lz), (0.25 * Lx, 0, 0),
+                   "flow and g"))
+        return png
+    print("channelPost: no particle picture: no finished run has particles"
+          " to draw")
+    return None
+
+
+def res_time(p, t):
+    return (float(t.name) - channel.end_time(p, "dispersion")) / p["tScale"]
+
+
