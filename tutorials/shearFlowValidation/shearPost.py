@@ -232,12 +232,10 @@ def post(preset, runs_dir=None, out_dir=None):
 
     if len(phys) == 2:
         # The paper's statements of App. B (shearStatements.py), judged on
-        # the series the summary keeps (rejudge reads them back)
+        # the series kept in series.json (rejudge reads them back)
         series = {k: runs[k].series(a_th) for k in ("EAM", "MAM")}
-        for k in ("EAM", "MAM"):
-            summary["runs"][k]["series"] = {
-                key: (v.tolist() if hasattr(v, "tolist") else v)
-                for key, v in series[k].items()}
+        (out / "series.json").write_text(shearStatements.series_text(
+            series))
         rows += statement_rows(series, a_th, gamma,
                                min(runs[k].tg[-1] for k in ("EAM", "MAM")))
     summary["alpha_band"] = band
@@ -277,14 +275,16 @@ def statement_rows(series, a_th, gamma, t_end_g):
 
 
 def rejudge(preset, out_dir=None):
-    """The statements judged again on a committed summary.json (its
-    series where written, else its final values: the rows that need the
-    series n/r), summary.json and regression.txt rewritten."""
+    """The statements judged again on a committed summary.json and the
+    runs' series.json beside it (without it, the summary's final values:
+    the rows that need the series n/r); summary.json and regression.txt
+    rewritten."""
     out = Path(out_dir or HERE / "results" / preset)
     summary = json.loads((out / "summary.json").read_text())
     runs = summary["runs"]
-    series = {k: shearStatements.from_summary(runs[k], summary["N0"])
-              for k in ("EAM", "MAM")}
+    kept = shearStatements.read_series(out / "series.json")
+    series = {k: kept.get(k) or shearStatements.from_summary(
+        runs[k], summary["N0"]) for k in ("EAM", "MAM")}
     t_end = min(runs[k]["tGamma_end"] for k in ("EAM", "MAM"))
     rows = [r for r in summary["regression"]
             if not re.match(r"S\d+[a-z]*: ", r["check"])]

@@ -34,9 +34,10 @@ Each is PASS, FAIL or n/r (with the reason) against the tolerance stated
 in its row; a direction is judged against 3 sigma of the counts' noise
 (n/r within it); the bands are the paper's words made numbers, declared
 below, not fits. The statements read the time series of a run (series():
-shearPost.Run.series, or the "series" a summary.json holds).
+shearPost.Run.series, or series.json beside a summary.json).
 """
 
+import json
 import math
 
 import numpy as np
@@ -107,13 +108,33 @@ NO_SERIES = ("the summary holds only the run's final values (written "
              "on the runs again")
 
 
+def series_text(series):
+    """The series of the runs {"EAM": s, "MAM": s} as the text of
+    series.json: one line per run and quantity (the statements read them
+    back with read_series)."""
+    lines = []
+    for run, s in series.items():
+        items = [f'  "{k}": {json.dumps(np.asarray(v).tolist())}'
+                 if hasattr(v, "__len__") else f'  "{k}": {json.dumps(v)}'
+                 for k, v in s.items()]
+        lines.append(f' "{run}": {{\n' + ",\n".join(items) + "\n }")
+    return "{\n" + ",\n".join(lines) + "\n}\n"
+
+
+def read_series(path):
+    """The series of series.json ({} if there is none)."""
+    if not path.is_file():
+        return {}
+    return {run: {k: (np.asarray(v) if isinstance(v, list) else v)
+                  for k, v in s.items()}
+            for run, s in json.loads(path.read_text()).items()}
+
+
 def from_summary(info, np0):
     """The series of a run as far as a summary.json's run entry gives
-    them (np0: the summary's N0): its "series" where written, else its
-    final values only (a series of one sample marked partial)."""
-    if "series" in info:
-        return {k: (np.asarray(v) if isinstance(v, list) else v)
-                for k, v in info["series"].items()}
+    them (np0: the summary's N0): its final values only, a series of one
+    sample marked partial (the statements that need the time series are
+    then n/r)."""
     return {"partial": True, "np0": np0, "tg": np.array([info["tGamma_end"]]),
             "Np": np.array([info["Np_final_over_Np0"] * np0]),
             "nCol": np.array([info["N_col"]]),
@@ -124,8 +145,8 @@ def from_summary(info, np0):
 
 def statements(series, alpha_th, unresolved=None, gamma_dot=None):
     """The rows of the statements for series {"EAM": s, "MAM": s} (dicts
-    of the series of shearPost.Run.series, or from_summary); unresolved: the reason why
-    this set-up cannot judge them (every row n/r with it)."""
+    of shearPost.Run.series, read_series or from_summary); unresolved:
+    the reason why this set-up cannot judge them (every row n/r)."""
     e, m = series["EAM"], series["MAM"]
     rows = []
     last = len(e["tg"]) - 1
