@@ -35,3 +35,29 @@ def test_bad_option_stops_at_once(tutorial, args, words, foam_env):
     assert res.returncode == 1, res.stdout + res.stderr
     assert words in res.stderr
     assert not (TUT / tutorial / "runs" / "None").exists()
+
+
+@pytest.mark.parametrize("script", ["Allrun",
+                                    "tutorials/verticalChannel/Allrun",
+                                    "tutorials/shearFlowValidation/Allrun"])
+def test_help_from_anywhere(tmp_path, foam_env, script):
+    """-help prints the script's header from any folder (it read its own
+    file by a path relative to the folder it had changed into), exits 0
+    and runs nothing."""
+    res = subprocess.run([str(project_dir() / script), "-help"],
+                         cwd=tmp_path, capture_output=True, text=True,
+                         timeout=60)
+    assert res.returncode == 0, res.stdout + res.stderr
+    assert "can't read" not in res.stderr and "Main job" not in res.stdout
+    assert len(res.stdout.splitlines()) > 10
+
+
+def test_main_job_refused_option_says_failed(foam_env):
+    """The main job after a refused option says that it failed, with the
+    tutorial's exit status, and names no report (it named runs/small's,
+    whatever ran, after 'Main job done')."""
+    res = subprocess.run(["./Allrun", "-np", "0"], cwd=project_dir(),
+                         capture_output=True, text=True, timeout=600)
+    assert res.returncode == 1, res.stdout + res.stderr
+    assert "Main job failed (exit status 1)" in res.stdout
+    assert "Main job done" not in res.stdout and "Report:" not in res.stdout
