@@ -242,14 +242,10 @@ def post(preset, runs_dir=None, out_dir=None):
     summary["sigma_alpha_rel"] = sig_a
     summary["regression"] = rows
 
-    (out / "summary.json").write_text(json.dumps(summary, indent=2,
-                                                 default=float) + "\n")
-    table = regression_table(preset, rows)
-    (out / "regression.txt").write_text(table + "\n")
-    print(table)
+    status = write_report(out, preset, summary, rows)
     plots(runs, out, a_th, K_ST, n0, gamma)
     picture(runs, out)
-    return 0 if all(r["status"] != reg.FAIL for r in rows) else 1
+    return status
 
 
 def fmt(v):
@@ -291,6 +287,12 @@ def rejudge(preset, out_dir=None):
     rows += statement_rows(series, summary["alpha_th"], summary["gammaDot"],
                            t_end)
     summary["regression"] = rows
+    return write_report(out, preset, summary, rows)
+
+
+def write_report(out, preset, summary, rows):
+    """summary.json and regression.txt (printed) of out; the exit status:
+    1 on a FAIL."""
     (out / "summary.json").write_text(json.dumps(summary, indent=2,
                                                  default=float) + "\n")
     table = regression_table(preset, rows)
