@@ -51,11 +51,19 @@ def tut(tmp_path):
     return t
 
 
+def _terminal_signals():
+    """SIGINT as a terminal gives it: a harness that runs the tests in
+    the background hands SIGINT on ignored, and a shell cannot trap a
+    signal ignored on entry."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def _start(tut):
     return subprocess.Popen(["./Allrun", "-study", "-preset", "ci", "-j",
                              "2"], cwd=tut, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True,
-                            start_new_session=True)
+                            start_new_session=True,
+                            preexec_fn=_terminal_signals)
 
 
 def test_ctrl_c_stops_the_study(tut, foam_env):
