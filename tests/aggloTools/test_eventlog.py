@@ -1,8 +1,8 @@
-"""aggloTools.eventlog names the codes of the collision-event log as the C++
-sources do: the categories in the order of encounterMemory::categoryType,
-the branches in the order and spelling of collisionOutcome::branchTypeNames
-(read from the sources, so that a renamed or added branch fails here), and
-doc/eventLog.md documents the same codes."""
+"""aggloTools.eventlog reads the collision-event log as the C++ writes it:
+the categories in the order of encounterMemory::categoryType (read from
+the sources, so that a renamed or added category fails here), the branch
+names from each file's header (the run's agglomeration model names them),
+and every value the C++ reader refuses is refused here too."""
 
 import re
 from pathlib import Path
@@ -33,26 +33,6 @@ def test_categories_follow_encounter_memory():
     assert [c.lower() for c in eventlog.CATEGORIES] == spelled
 
 
-def test_branches_follow_collision_outcome():
-    kernels = SRC / "collisionKernels/collisionOutcome"
-    enum = _enum(kernels / "collisionOutcome.H", "branchType")
-    names = dict(re.findall(r"\{\s*branchType::(\w+),\s*\"(\w+)\"\s*\}",
-                            (kernels / "collisionOutcome.C").read_text()))
-    assert list(eventlog.BRANCHES) == [names[e] for e in enum]
-    # one name per branch: the C++ counts the branches by the names
-    assert len(names) == len(enum)
-
-
-def test_event_log_doc_lists_the_codes():
-    doc = (ROOT / "doc/eventLog.md").read_text()
-    row = next(ln for ln in doc.splitlines() if "branch of the run" in ln)
-    codes = [int(c) for c in
-             re.findall(r"(\d+) [a-zA-Z]", row.split(":", 1)[1])]
-    n = len(eventlog.BRANCHES)
-    assert codes[:n] == list(range(n))
-    assert str(eventlog.GHOST) in row
-
-
 def _record():
     """One valid record: two 12 um quartz primaries approaching."""
     r = np.zeros(1, eventlog.DTYPE)
@@ -64,10 +44,45 @@ def _record():
     return r
 
 
-def _log(path, records):
-    head = (f"aggloCollisionEvents 1 recordBytes {eventlog.DTYPE.itemsize}"
-            " arch LSB").encode().ljust(eventlog.HEADER_BYTES, b" ")
+EAM = ("eq21", "eq65", "caseI", "caseII")
+
+
+def _log(path, records, branches=EAM):
+    head = (f"aggloCollisionEvents 2 recordBytes {eventlog.DTYPE.itemsize}"
+            " arch LSB;label=32;scalar=64 branches " + ",".join(branches))
+    head = head.encode().ljust(eventlog.HEADER_BYTES - 1, b" ") + b"\n"
     path.write_bytes(head + records.tobytes())
+
+
+def test_header_names_the_branches(tmp_path):
+    """The branch codes of a file index the names of its header: a code
+    of the header's range is read, the next one is refused in the C++
+    reader's words; a case whose files name different branches (two
+    models in one folder) is refused; an older layout is refused."""
+    f = tmp_path / "postProcessing/kinematicCloudCollisionEvents"
+    f.mkdir(parents=True)
+    r = _record()
+    r["branch"] = 3
+    _log(f / "events0.bin", r)
+    assert eventlog.read_header(f / "events0.bin") == EAM
+    assert len(eventlog.read_file(f / "events0.bin")) == 1
+    assert eventlog.branches(tmp_path) == EAM
+    r["branch"] = 4
+    _log(f / "events0.bin", r)
+    with pytest.raises(ValueError, match=re.escape(
+            "record 0: branch 4 (valid: 0-3, 255 ghost)")):
+        eventlog.read_file(f / "events0.bin")
+    r["branch"] = 1
+    _log(f / "events0.bin", r)
+    _log(f / "events1.bin", r, ("rebound", "agglomerate"))
+    assert len(eventlog.read_file(f / "events1.bin")) == 1
+    with pytest.raises(ValueError, match="different branches"):
+        eventlog.branches(tmp_path)
+    old = ("aggloCollisionEvents 1 recordBytes 220 arch LSB;label=32;"
+           "scalar=64").encode().ljust(eventlog.HEADER_BYTES, b" ")
+    (f / "events1.bin").write_bytes(old + r.tobytes())
+    with pytest.raises(ValueError, match="not a collision event file"):
+        eventlog.read_file(f / "events1.bin")
 
 
 @pytest.mark.parametrize("field, value, words", [

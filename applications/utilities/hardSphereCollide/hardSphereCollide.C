@@ -34,7 +34,10 @@ Description
     structure models of the agglomerationHardSphere library and prints the
     outcome as JSON on standard output: collision type (sticking/sliding),
     model branch (agglomerate / rebound case), post-collision states or the
-    agglomerate, and the intermediate quantities of the models.
+    agglomerate, and the intermediate quantities: fna, dKEformation and
+    spinCapped for every model, then those the agglomeration model names
+    (agglomerationModel::valueNames(); null where not computed, flags as
+    0/1).
 
     Needs no case. The dictionary holds the kernel input (see
     hardSphereCollisionKernel) and the two particles:
@@ -259,7 +262,8 @@ int main(int argc, char *argv[])
         << "  \"collisionType\": \""
         << collisionOutcome::collisionTypeNames[out.type] << "\",\n"
         << "  \"branch\": \""
-        << collisionOutcome::branchTypeNames[out.branch] << "\",\n"
+        << kernel.agglomeration().branchNames()[out.branch].c_str()
+        << "\",\n"
         << "  \"agglomerate\": " << (out.agglomerates ? "true" : "false")
         << ",\n"
         << "  \"normal\": " << vec(pair.n()) << ",\n"
@@ -279,29 +283,23 @@ int main(int argc, char *argv[])
             << "  \"agglomerateState\": null,\n";
     }
 
-    os  << "  \"intermediates\": {\n"
-        << "    \"f_na\": " << num(out.fna) << ",\n"
-        << "    \"f_nc\": " << num(out.fnc) << ",\n"
-        << "    \"f_nc_star\": " << num(out.fncStar) << ",\n"
-        << "    \"t_star\": " << num(out.tStar) << ",\n"
-        << "    \"dE_vdW\": " << num(out.dEvdW) << ",\n"
-        << "    \"E_kin_plus\": " << num(out.EkinPlus) << ",\n"
-        << "    \"E_rot_plus\": " << num(out.ErotPlus) << ",\n"
-        << "    \"E_rot_ag\": " << num(out.ErotAg) << ",\n"
-        << "    \"k_n2\": " << num(out.kn2) << ",\n"
-        << "    \"k_t2\": " << num(out.kt2) << ",\n"
-        << "    \"k_omega2\": " << num(out.komega2) << ",\n"
-        << "    \"deltaL\": " << num(out.deltaL) << ",\n"
-        << "    \"criterionI\": " << (out.critI ? "true" : "false") << ",\n"
-        << "    \"criterionII\": " << (out.critII ? "true" : "false")
-        << ",\n"
-        << "    \"spinClamped\": " << (out.spinClamped ? "true" : "false")
-        << ",\n"
-        << "    \"dKE_formation\": " << num(out.dKEformation) << ",\n"
-        << "    \"spinCapped\": " << (out.spinCapped ? "true" : "false")
-        << "\n"
-        << "  },\n"
-        << "  \"balance\": {\n"
+    // The intermediates: those of every model, then the model's own
+    {
+        const agglomerationModel& model = kernel.agglomeration();
+        const FixedList<scalar, 3> common(out.commonValues());
+        wordList names(collisionOutcome::commonValueNames);
+        names.append(model.valueNames());
+        os  << "  \"intermediates\": {\n";
+        forAll(names, i)
+        {
+            const scalar v =
+                i < common.size() ? common[i] : out.values[i - common.size()];
+            os  << "    \"" << names[i].c_str() << "\": " << num(v)
+                << (i + 1 < names.size() ? ",\n" : "\n");
+        }
+        os  << "  },\n";
+    }
+    os  << "  \"balance\": {\n"
         << "    \"massBefore\": " << num(mBefore) << ",\n"
         << "    \"massAfter\": " << num(mAfter) << ",\n"
         << "    \"momentumBefore\": " << vec(PBefore) << ",\n"

@@ -183,9 +183,27 @@ int main(int argc, char *argv[])
     }
     DynamicList<collisionEvent> events;
     const label nFiles = logs.size();
+    wordList loggedBranches;
     for (const fileName& f : logs)
     {
-        for (const collisionEvent& e : collisionEventFile::read(dir/f))
+        wordList branches;
+        const List<collisionEvent> fileEvents
+        (
+            collisionEventFile::read(dir/f, branches)
+        );
+        if (loggedBranches.empty())
+        {
+            loggedBranches = branches;
+        }
+        else if (branches != loggedBranches)
+        {
+            FatalErrorInFunction
+                << "The log files of " << dir << " name different"
+                << " branches: " << logs.first() << " " << loggedBranches
+                << ", " << f << " " << branches << " (runs of different"
+                << " agglomeration models in one folder)" << exit(FatalError);
+        }
+        for (const collisionEvent& e : fileEvents)
         {
             if (which == "all" || e.category == 0)
             {
@@ -241,8 +259,8 @@ int main(int argc, char *argv[])
         (
             replay
             (
-                "run", props.objectPath(), runKernel, events, true,
-                keepEvents
+                "run", props.objectPath(), runKernel, events,
+                loggedBranches, true, keepEvents
             )
         );
         if (args.found("variants"))
@@ -291,7 +309,11 @@ int main(int argc, char *argv[])
                 );
                 results.append
                 (
-                    replay(v.keyword(), f, kd, events, false, keepEvents)
+                    replay
+                    (
+                        v.keyword(), f, kd, events, loggedBranches, false,
+                        keepEvents
+                    )
                 );
             }
         }
@@ -310,7 +332,11 @@ int main(int argc, char *argv[])
         hardSphereInput::checkKeys(dict, hardSphereCollisionKernel::keys(dict));
         results.append
         (
-            replay(f.nameLessExt(), f, dict, events, false, keepEvents)
+            replay
+            (
+                f.nameLessExt(), f, dict, events, loggedBranches, false,
+                keepEvents
+            )
         );
     }
 
@@ -343,8 +369,8 @@ int main(int argc, char *argv[])
 
     writeReplay
     (
-        events, results, base, which, nFiles, dir, runTime.globalPath(),
-        cloudName, jsonOut
+        events, loggedBranches, results, base, which, nFiles, dir,
+        runTime.globalPath(), cloudName, jsonOut
     );
 
     if (keepEvents)

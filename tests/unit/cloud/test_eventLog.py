@@ -392,6 +392,11 @@ def test_per_event_output(case_dir, foam_env):
     conf = {r["name"]: r for r in res["configurations"]}
     assert ev["elastic.agglomerates"].sum() == 0
     assert ev["run.agglomerates"].sum() == conf["run"]["agglomerations"]
-    # EAM intermediates where the EAM decided (Eq. 21 terms finite)
-    eam = ev["run.branch"] != 1
+    # the codes of the log and of the run's kernel name the same branches,
+    # those of the run's model (EAM)
+    assert (res["loggedBranches"] == list(conf["run"]["branches"])
+            == list(eventlog.branches(c))
+            == ["eq21", "eq65", "caseI", "caseII"])
+    # EAM intermediates wherever the EAM decided (Eq. 21 terms finite)
+    eam = ev["run.branch"] >= 0
     assert np.all(np.isfinite(ev["run.dEvdW"][eam]))

@@ -20,6 +20,9 @@ using namespace aggloTest;
 namespace
 {
 
+//- The branches of the corrected EAM, as its model names them
+const wordList eamBranches({"eq21", "eq65", "caseI", "caseII"});
+
 //- A record of every field; extreme: values at the limits of a double
 //  (the byte round trip keeps them exactly), else within the bounds of a
 //  valid record that the file reader checks (a velocity of 1e300 is
@@ -29,7 +32,7 @@ collisionEvent sample(const label k, const bool extreme = false)
     collisionEvent e;
     e.timeIndex = 100 + k/3;
     e.category = k % 3;
-    e.branch = (k % 2 ? collisionOutcome::EQ21 : collisionOutcome::CASE_II);
+    e.branch = (k % 2 ? 0 : 3);     // eq21, caseII
     e.agglomerates = k % 2;
     e.type = collisionOutcome::SLIDING;
     e.time = 0.1 + 1e-7*k + 1.0/3.0;
@@ -110,11 +113,11 @@ TEST(CollisionEvent, OutcomeOfGhostAndKernel)
     EXPECT_EQ(e.branch, collisionEvent::ghostBranch);
     EXPECT_FALSE(e.agglomerates);
     collisionOutcome o;
-    o.branch = collisionOutcome::EQ65;
+    o.branch = 1;
     o.agglomerates = true;
     o.type = collisionOutcome::SLIDING;
     e.setOutcome(&o);
-    EXPECT_EQ(e.branch, label(collisionOutcome::EQ65));
+    EXPECT_EQ(e.branch, 1);
     EXPECT_TRUE(e.agglomerates);
     EXPECT_EQ(e.type, label(collisionOutcome::SLIDING));
 }
@@ -125,9 +128,11 @@ TEST(CollisionEventFile, AppendReadTruncate)
     List<collisionEvent> first(5), second(4);
     forAll(first, k) first[k] = sample(k);              // steps 100, 101
     forAll(second, k) second[k] = sample(5 + k);        // steps 101-104
-    collisionEventFile::append(f, first);
-    collisionEventFile::append(f, second);
-    List<collisionEvent> all(collisionEventFile::read(f));
+    collisionEventFile::append(f, first, eamBranches);
+    collisionEventFile::append(f, second, eamBranches);
+    wordList branches;
+    List<collisionEvent> all(collisionEventFile::read(f, branches));
+    EXPECT_EQ(branches, eamBranches);
     ASSERT_EQ(all.size(), 9);
     forAll(all, k)
     {
@@ -139,7 +144,7 @@ TEST(CollisionEventFile, AppendReadTruncate)
         std::ofstream os(f.c_str(), std::ios::binary | std::ios::app);
         os.write("partial", 7);
     }
-    EXPECT_THROW(collisionEventFile::read(f), Foam::error);
+    EXPECT_THROW(collisionEventFile::read(f, branches), Foam::error);
 
     // restart from step 102: the records of steps 103 and 104 go
     label kept = 0;
@@ -148,7 +153,7 @@ TEST(CollisionEventFile, AppendReadTruncate)
         kept += (sample(k).timeIndex <= 102);
     }
     EXPECT_EQ(collisionEventFile::truncateAfter(f, 102), 9 - kept);
-    all = collisionEventFile::read(f);
+    all = collisionEventFile::read(f, branches);
     ASSERT_EQ(all.size(), kept);
     forAll(all, k)
     {
@@ -156,11 +161,57 @@ TEST(CollisionEventFile, AppendReadTruncate)
     }
     // nothing after the last step: unchanged
     EXPECT_EQ(collisionEventFile::truncateAfter(f, 1000), 0);
-    EXPECT_EQ(collisionEventFile::read(f).size(), kept);
-    // before every record: the header only
+    EXPECT_EQ(collisionEventFile::read(f, branches).size(), kept);
+
+    // events of another model's branches are not appended to
+    const wordList mamBranches({"rebound", "agglomerate"});
+    List<collisionEvent> one(1, sample(0));
+    one[0].timeIndex = 1000;
+    EXPECT_THROW
+    (
+        collisionEventFile::append(f, one, mamBranches),
+        Foam::error
+    );
+    EXPECT_EQ(collisionEventFile::read(f, branches).size(), kept);
+    EXPECT_EQ(branches, eamBranches);
+
+    // before every record: the header only, which then follows the model
+    // of the run that appends
     EXPECT_EQ(collisionEventFile::truncateAfter(f, 0), kept);
-    EXPECT_EQ(collisionEventFile::read(f).size(), 0);
+    EXPECT_EQ(collisionEventFile::read(f, branches).size(), 0);
+    one[0].branch = 1;
+    collisionEventFile::append(f, one, mamBranches);
+    all = collisionEventFile::read(f, branches);
+    EXPECT_EQ(branches, mamBranches);
+    ASSERT_EQ(all.size(), 1);
+    expectSame(all[0], one[0]);
+
+    // a branch code beyond the header's names is a corrupt record
+    one[0].branch = 2;
+    collisionEventFile::append(f, one, mamBranches);
+    EXPECT_NE
+    (
+        errorMessage([&]{ collisionEventFile::read(f, branches); })
+            .find("branch 2 (valid: 0-1, 255 ghost)"),
+        std::string::npos
+    );
     std::remove(f.c_str());
+}
+
+TEST(CollisionEventFile, HeaderNamesTheBranches)
+{
+    const std::string head(collisionEventFile::header(eamBranches));
+    EXPECT_EQ
+    (
+        head,
+        collisionEventFile::layout() + " branches eq21,eq65,caseI,caseII"
+    );
+    EXPECT_LT(head.size(), collisionEventFile::headerBytes);
+
+    // names that do not fit the header, or none, are refused
+    wordList many(20, word("aLongBranchName"));
+    EXPECT_THROW(collisionEventFile::header(many), Foam::error);
+    EXPECT_THROW(collisionEventFile::header(wordList()), Foam::error);
 }
 
 TEST(CollisionEventFile, RejectsAnotherLayout)
@@ -172,9 +223,14 @@ TEST(CollisionEventFile, RejectsAnotherLayout)
         head.resize(collisionEventFile::headerBytes - 1, ' ');
         os << head << '\n';
     }
-    EXPECT_THROW(collisionEventFile::read(f), Foam::error);
+    wordList branches;
+    EXPECT_THROW(collisionEventFile::read(f, branches), Foam::error);
     List<collisionEvent> one(1, sample(0));
-    EXPECT_THROW(collisionEventFile::append(f, one), Foam::error);
+    EXPECT_THROW
+    (
+        collisionEventFile::append(f, one, eamBranches),
+        Foam::error
+    );
     std::remove(f.c_str());
 }
 

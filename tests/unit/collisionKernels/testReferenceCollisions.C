@@ -253,7 +253,7 @@ TEST_P(ReferenceCollision, Section12_3)
     {
         EXPECT_EQ
         (
-            std::string(collisionOutcome::branchTypeNames[out.branch]),
+            branchName(kernel, out),
             c.ex.branch
         );
     }
@@ -311,20 +311,20 @@ TEST(ReferenceIntermediates, EAMRows3_5_11)
 
     referencePair(1e-3, 0, 0, 0, p1, p2);
     collisionOutcome out(kernel.collide(p1, p2));
-    EXPECT_TRUE(near(out.dEvdW, 1.0953e-18, 1e-4));
-    EXPECT_TRUE(near(out.EkinPlus, 4.6822e-19, 1e-4));
-    EXPECT_TRUE(near(out.kn2, -1.3394, 1e-4));
+    EXPECT_TRUE(near(value(kernel, out, "dEvdW"), 1.0953e-18, 1e-4));
+    EXPECT_TRUE(near(value(kernel, out, "EkinPlus"), 4.6822e-19, 1e-4));
+    EXPECT_TRUE(near(value(kernel, out, "kn2"), -1.3394, 1e-4));
 
     referencePair(3e-3, 0, 0, 0, p1, p2);
     out = kernel.collide(p1, p2);
-    EXPECT_TRUE(near(out.kn2, 0.2202, 2e-4));
+    EXPECT_TRUE(near(value(kernel, out, "kn2"), 0.2202, 2e-4));
 
     referencePair(3e-3, 60, 0, 0, p1, p2);
     out = kernel.collide(p1, p2);
-    EXPECT_TRUE(near(out.EkinPlus, 2.2171e-18, 1e-4));
-    EXPECT_TRUE(near(out.ErotPlus, 1.4215e-18, 1e-4));
-    EXPECT_TRUE(near(out.ErotAg, 2.3993e-18, 1e-4));
-    EXPECT_TRUE(near(out.dEvdW, 1.6430e-18, 1e-4));
+    EXPECT_TRUE(near(value(kernel, out, "EkinPlus"), 2.2171e-18, 1e-4));
+    EXPECT_TRUE(near(value(kernel, out, "ErotPlus"), 1.4215e-18, 1e-4));
+    EXPECT_TRUE(near(value(kernel, out, "ErotAg"), 2.3993e-18, 1e-4));
+    EXPECT_TRUE(near(value(kernel, out, "dEvdW"), 1.6430e-18, 1e-4));
 }
 
 
@@ -342,9 +342,9 @@ TEST(ReferenceIntermediates, Section12_4HeadOn1mmps)
         const dictionary dict(kernelDict("MAM"));
         const hardSphereCollisionKernel kernel(dict);
         const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(out.tStar, 4.74389e-8, 1e-5));
-        EXPECT_TRUE(near(out.fnc, 0.10847, 1e-4));
-        EXPECT_TRUE(near(out.fncStar, 8.0701e-4, 1e-4));
+        EXPECT_TRUE(near(value(kernel, out, "tStar"), 4.74389e-8, 1e-5));
+        EXPECT_TRUE(near(value(kernel, out, "fnc"), 0.10847, 1e-4));
+        EXPECT_TRUE(near(value(kernel, out, "fncStar"), 8.0701e-4, 1e-4));
     }
     {
         const dictionary dict
@@ -353,14 +353,14 @@ TEST(ReferenceIntermediates, Section12_4HeadOn1mmps)
         );
         const hardSphereCollisionKernel kernel(dict);
         const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(out.fnc, 0.10799, 1e-4));
-        EXPECT_TRUE(near(out.fncStar, 3.2894e-4, 1e-4));
+        EXPECT_TRUE(near(value(kernel, out, "fnc"), 0.10799, 1e-4));
+        EXPECT_TRUE(near(value(kernel, out, "fncStar"), 3.2894e-4, 1e-4));
     }
     {
         const dictionary dict(kernelDict("EAM"));
         const hardSphereCollisionKernel kernel(dict);
         const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(out.dEvdW, 1.09533e-18, 1e-5));
+        EXPECT_TRUE(near(value(kernel, out, "dEvdW"), 1.09533e-18, 1e-5));
     }
 
     // d = 4 um
@@ -369,16 +369,16 @@ TEST(ReferenceIntermediates, Section12_4HeadOn1mmps)
         const dictionary dict(kernelDict("MAM"));
         const hardSphereCollisionKernel kernel(dict);
         const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(out.tStar, 1.5813e-8, 1e-4));
-        EXPECT_TRUE(near(out.fnc, 0.32541, 1e-4));
-        EXPECT_TRUE(near(out.fncStar, 2.42104e-3, 1e-5));
+        EXPECT_TRUE(near(value(kernel, out, "tStar"), 1.5813e-8, 1e-4));
+        EXPECT_TRUE(near(value(kernel, out, "fnc"), 0.32541, 1e-4));
+        EXPECT_TRUE(near(value(kernel, out, "fncStar"), 2.42104e-3, 1e-5));
     }
     {
         const dictionary dict(kernelDict("EAM"));
         const hardSphereCollisionKernel kernel(dict);
         const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(out.dEvdW, 1.21704e-19, 1e-5));
-        EXPECT_TRUE(near(out.EkinPlus, 1.73414e-20, 1e-5));
+        EXPECT_TRUE(near(value(kernel, out, "dEvdW"), 1.21704e-19, 1e-5));
+        EXPECT_TRUE(near(value(kernel, out, "EkinPlus"), 1.73414e-20, 1e-5));
     }
 }
 
@@ -398,7 +398,7 @@ TEST(ReferenceIntermediates, Alletto2014Row14CaseIIIRebound)
     const collisionOutcome out(kernel.collide(p1, p2));
     const collisionOutcome ref(none.collide(p1, p2));
 
-    ASSERT_EQ(out.branch, collisionOutcome::CASE_III_REBOUND);
+    ASSERT_EQ(branchName(kernel, out), "caseIIIrebound");
     EXPECT_FALSE(out.agglomerates);
     const vector du = out.p2.U - out.p1.U;
     EXPECT_TRUE(near(du.x(), 0, 0, 1e-15));
@@ -412,7 +412,7 @@ TEST(ReferenceIntermediates, Alletto2014Row14CaseIIIRebound)
 
     const scalar KEnone = ref.p1.kineticEnergy() + ref.p2.kineticEnergy();
     const scalar KE = out.p1.kineticEnergy() + out.p2.kineticEnergy();
-    EXPECT_TRUE(near(KEnone - KE, out.dEvdW, 1e-9));
+    EXPECT_TRUE(near(KEnone - KE, value(kernel, out, "dEvdW"), 1e-9));
 }
 
 
@@ -427,20 +427,20 @@ TEST(ReferenceIntermediates, A6CaseIIAngularMomentumDefect)
     referencePair(1e-2, 85, 0, 0, p1, p2);
     const binaryCollision pair(p1, p2);
     const collisionOutcome o(kernel.collide(p1, p2));
-    ASSERT_EQ(o.branch, collisionOutcome::CASE_II);
+    ASSERT_EQ(branchName(kernel, o), "caseII");
 
     const vector L0 = pair.angularMomentum(p1, p2);
     const vector L1 = binaryCollision(o.p1, o.p2).angularMomentum(o.p1, o.p2);
     const scalar dL = mag(L1 - L0);
     EXPECT_GT(dL, 1e-3*mag(L0));
-    EXPECT_TRUE(near(dL, o.deltaL, 1e-10));
+    EXPECT_TRUE(near(dL, value(kernel, o, "deltaL"), 1e-10));
 
     // |dL| = m^ ell (1 - k_t)|w.t| with w from the no-cohesion rebound
     const dictionary dictNone(kernelDict("none"));
     const hardSphereCollisionKernel none(dictNone);
     const collisionOutcome r(none.collide(p1, p2));
     const vector w = r.p2.U - r.p1.U;
-    const scalar kt = std::sqrt(o.kt2);
+    const scalar kt = std::sqrt(value(kernel, o, "kt2"));
     EXPECT_TRUE(near(dL, pair.mHat()*pair.ell()*(1 - kt)*std::abs(w & pair.t()),
         1e-10));
 }

@@ -51,10 +51,10 @@ def test_eam_row11_agglomerates(tmp_path, foam_env):
     assert ag["d"] == pytest.approx(23.4844e-6, rel=1e-4)
     assert ag["omega"][2] == pytest.approx(1.4132e2, rel=1e-4)
     im = out["intermediates"]
-    assert im["E_kin_plus"] == pytest.approx(2.2171e-18, rel=1e-4)
-    assert im["E_rot_plus"] == pytest.approx(1.4215e-18, rel=1e-4)
-    assert im["E_rot_ag"] == pytest.approx(2.3993e-18, rel=1e-4)
-    assert im["dE_vdW"] == pytest.approx(1.6430e-18, rel=1e-4)
+    assert im["EkinPlus"] == pytest.approx(2.2171e-18, rel=1e-4)
+    assert im["ErotPlus"] == pytest.approx(1.4215e-18, rel=1e-4)
+    assert im["ErotAg"] == pytest.approx(2.3993e-18, rel=1e-4)
+    assert im["dEvdW"] == pytest.approx(1.6430e-18, rel=1e-4)
     bal = out["balance"]
     assert bal["massAfter"] == pytest.approx(bal["massBefore"], rel=1e-13)
 
@@ -64,7 +64,7 @@ def test_eam_row5_caseI_rebound(tmp_path, foam_env):
     assert out["branch"] == "caseI" and out["collisionType"] == "sticking"
     p1, p2 = out["particles"]
     assert p2["U"][0] - p1["U"][0] == pytest.approx(1.3656e-3, rel=1e-4)
-    assert out["intermediates"]["k_n2"] == pytest.approx(0.2202, rel=2e-4)
+    assert out["intermediates"]["kn2"] == pytest.approx(0.2202, rel=2e-4)
 
 
 def test_mam_row4_rebound_intermediates(tmp_path, foam_env):
@@ -73,9 +73,14 @@ def test_mam_row4_rebound_intermediates(tmp_path, foam_env):
     p1, p2 = out["particles"]
     assert p2["U"][0] - p1["U"][0] == pytest.approx(1.2375e-3, rel=1e-4)
     im = out["intermediates"]
-    assert im["f_na"] == pytest.approx(1.97 * 2e-3, rel=1e-12)
+    assert im["fna"] == pytest.approx(1.97 * 2e-3, rel=1e-12)
     # t* = (mHat^2/(RHat EHat^2 v))^(1/5), section 12.4 at 1 mm/s scaled
-    assert im["t_star"] == pytest.approx(4.74389e-8 * 2 ** -0.2, rel=1e-5)
+    assert im["tStar"] == pytest.approx(4.74389e-8 * 2 ** -0.2, rel=1e-5)
+    # the intermediates are those of every model, then the MAM's, and
+    # nothing else; the flags of Eq. 75 as 0/1
+    assert list(im) == ["fna", "dKEformation", "spinCapped", "fnc",
+                        "fncStar", "tStar", "critI", "critII"]
+    assert im["critI"] == 0 and im["spinCapped"] == 0
 
 
 def test_not_in_contact_is_an_error(tmp_path, foam_env):

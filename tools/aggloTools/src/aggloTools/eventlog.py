@@ -32,10 +32,9 @@ DTYPE = np.dtype(
 
 #: Contact categories, by code (encounterMemory::categoryType)
 CATEGORIES = ("first", "repeat", "overlapStart")
-#: Kernel branches, by code, as the C++ names them
-#: (collisionOutcome::branchTypeNames; hardSphereReplay's JSON keys)
-BRANCHES = ("rebound", "agglomerate", "eq21", "eq65", "caseI", "caseII",
-            "caseIIIrebound")
+#: The branch code of a ghost contact (detected, not applied); the other
+#: codes index the branch names of the file's header (the run's
+#: agglomeration model names them: agglomerationModel::branchNames)
 GHOST = 255
 
 
@@ -46,10 +45,10 @@ RHO_RANGE = (1e-3, 1e6)          # kg/m3
 X_MAX, U_MAX, OMEGA_MAX = 1e6, 1e4, 1e12   # per component
 
 
-def invalid_record(r):
-    """The reason why the record r cannot be a logged collision, in the
-    C++ reader's words and order ('' if it can be one)."""
-    nb = len(BRANCHES)
+def invalid_record(r, nb):
+    """The reason why the record r of a log whose header names nb
+    branches cannot be a logged collision, in the C++ reader's words and
+    order ('' if it can be one)."""
     if r["timeIndex"] < 0:
         return f"time index {r['timeIndex']} (valid: >= 0)"
     if r["category"] > 2:
@@ -85,14 +84,14 @@ def invalid_record(r):
     return ""
 
 
-def check_records(records, path):
+def check_records(records, path, nb):
     """Stop (ValueError naming the file, the record and the value) at the
-    first record that cannot be a logged collision, as the C++ reader
-    does."""
+    first record that cannot be a logged collision of a log with nb
+    branches, as the C++ reader does."""
     r = records
     with np.errstate(invalid="ignore"):
         bad = ((r["timeIndex"] < 0) | (r["category"] > 2)
-               | ((r["branch"] != GHOST) & (r["branch"] >= len(BRANCHES)))
+               | ((r["branch"] != GHOST) & (r["branch"] >= nb))
                | (r["agglomerates"] > 1) | (r["type"] > 1)
                | ~np.isfinite(r["time"]))
         for k in (1, 2):
@@ -106,30 +105,52 @@ def check_records(records, path):
                 bad |= ~np.all(np.isfinite(v) & (np.abs(v) <= bound), axis=1)
     if bad.any():
         k = int(np.argmax(bad))
-        raise ValueError(f"{path}: record {k}: {invalid_record(r[k])}; the "
-                         "file is corrupt")
+        raise ValueError(f"{path}: record {k}: {invalid_record(r[k], nb)}; "
+                         "the file is corrupt")
 
 
 def folder(case, cloud="kinematicCloud"):
     return Path(case) / "postProcessing" / f"{cloud}CollisionEvents"
 
 
-def read_file(path):
-    """The records of one events<rank>.bin file."""
-    data = Path(path).read_bytes()
-    head = data[:HEADER_BYTES].decode(errors="replace")
-    want = f"aggloCollisionEvents 1 recordBytes {DTYPE.itemsize} arch LSB"
-    if not head.startswith(want):
+def read_header(path):
+    """The branch names that the header of an events<rank>.bin file gives
+    (ValueError if it is not a log of this layout)."""
+    head = Path(path).read_bytes()[:HEADER_BYTES].decode(errors="replace")
+    want = (f"aggloCollisionEvents 2 recordBytes {DTYPE.itemsize} arch LSB;"
+            "label=32;scalar=64 branches ")
+    if not head.startswith(want) or not head[len(want):].split():
         raise ValueError(f"{path}: not a collision event file of this"
                          f" layout (header {head.strip()!r})")
+    return tuple(head[len(want):].split()[0].split(","))
+
+
+def read_file(path):
+    """The records of one events<rank>.bin file."""
+    branches = read_header(path)
+    data = Path(path).read_bytes()
     body = len(data) - HEADER_BYTES
     if body % DTYPE.itemsize:
         raise ValueError(f"{path}: a partial record at the end (a write"
                          " cut off; a restart of the run cuts it back)")
     records = np.frombuffer(data, DTYPE, body // DTYPE.itemsize,
                             HEADER_BYTES)
-    check_records(records, path)
+    check_records(records, path, len(branches))
     return records
+
+
+def branches(case, cloud="kinematicCloud"):
+    """The branch names of the case's logs (one model: every file's
+    header names the same; ValueError otherwise)."""
+    files = sorted(folder(case, cloud).glob("events*.bin"))
+    if not files:
+        raise FileNotFoundError(f"no collision event log in "
+                                f"{folder(case, cloud)}")
+    names = {read_header(f) for f in files}
+    if len(names) != 1:
+        raise ValueError(f"{folder(case, cloud)}: the log files name "
+                         f"different branches {sorted(names)}")
+    return names.pop()
 
 
 def read_events(case, cloud="kinematicCloud"):

@@ -28,6 +28,8 @@ License
 #include "collisionEvent.H"
 #include <cstring>
 #include <cstdint>
+#include <cmath>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -76,6 +78,43 @@ void getState(const char* buf, std::size_t& pos, Foam::hardSphereState& s)
     s.rho = get<double>(buf, pos);
 }
 
+//- The bounds of a record's values (doc/eventLog.md, "Valid records";
+//  aggloTools.eventlog checks the same): wide enough for any particle of
+//  a flow, narrow enough that the kernels' products (masses, energies,
+//  moments of inertia) stay finite, so that a corrupt record is refused
+//  instead of stopping the replay with a floating-point exception
+const Foam::scalar dMin = 1e-9, dMax = 1;           // m
+const Foam::scalar rhoMin = 1e-3, rhoMax = 1e6;     // kg/m3
+const Foam::scalar xMax = 1e6;                      // m, per component
+const Foam::scalar UMax = 1e4;                      // m/s, per component
+const Foam::scalar omegaMax = 1e12;                 // rad/s, per component
+
+
+//- A vector as text, (x y z)
+std::string text(const Foam::vector& v)
+{
+    std::ostringstream os;
+    os << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
+    return os.str();
+}
+
+
+//- True if every component of v is finite and within +-bound
+bool bounded(const Foam::vector& v, const Foam::scalar bound)
+{
+    for (const Foam::scalar c : {v.x(), v.y(), v.z()})
+    {
+        if (!(std::isfinite(c) && std::abs(c) <= bound))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+//- The reason why a record read from a log cannot be a logged collision
+//  (empty if it can be one); buf: the record as read
 } // End anonymous namespace
 
 
@@ -161,6 +200,95 @@ void Foam::collisionEvent::unpack(const char* buf)
     p1.nPrimary = get<int32_t>(buf, pos);
     p2.nPrimary = get<int32_t>(buf, pos);
     wallDistance = get<float>(buf, pos);
+}
+
+
+std::string Foam::collisionEvent::invalid
+(
+    const char* buf,
+    const label nBranches
+) const
+{
+    const collisionEvent& e = *this;
+    const Foam::label agglomerates =
+        Foam::collisionEvent::agglomeratesByte(buf);
+
+    std::ostringstream os;
+    if (e.timeIndex < 0)
+    {
+        os << "time index " << e.timeIndex << " (valid: >= 0)";
+    }
+    else if (e.category < 0 || e.category > 2)
+    {
+        os << "category " << e.category << " (valid: 0 first, 1 repeat,"
+           << " 2 overlap at the start of the step)";
+    }
+    else if
+    (
+        e.branch != Foam::collisionEvent::ghostBranch
+     && (e.branch < 0 || e.branch >= nBranches)
+    )
+    {
+        os << "branch " << e.branch << " (valid: 0-"
+           << nBranches - 1 << ", "
+           << Foam::collisionEvent::ghostBranch << " ghost)";
+    }
+    else if (agglomerates < 0 || agglomerates > 1)
+    {
+        os << "agglomerates " << agglomerates << " (valid: 0, 1)";
+    }
+    else if (e.type < 0 || e.type > 1)
+    {
+        os << "collision type " << e.type << " (valid: 0 sticking,"
+           << " 1 sliding)";
+    }
+    else if (!std::isfinite(e.time))
+    {
+        os << "contact time " << e.time << " (valid: finite)";
+    }
+    for (const Foam::hardSphereState* p : {&e.p1, &e.p2})
+    {
+        if (!os.str().empty())
+        {
+            break;
+        }
+        const int k = p == &e.p1 ? 1 : 2;
+        if (!(std::isfinite(p->d) && p->d >= dMin && p->d <= dMax))
+        {
+            os << "partner " << k << ": d " << p->d << " (valid: "
+               << dMin << " - " << dMax << " m)";
+        }
+        else if
+        (
+            !(std::isfinite(p->rho) && p->rho >= rhoMin && p->rho <= rhoMax)
+        )
+        {
+            os << "partner " << k << ": rho " << p->rho << " (valid: "
+               << rhoMin << " - " << rhoMax << " kg/m3)";
+        }
+        else if (p->nPrimary < 1)
+        {
+            os << "partner " << k << ": nPrimary " << p->nPrimary
+               << " (valid: >= 1)";
+        }
+        else if (!bounded(p->x, xMax))
+        {
+            os << "partner " << k << ": position " << text(p->x) << " (valid:"
+               << " finite, each component within +-" << xMax << " m)";
+        }
+        else if (!bounded(p->U, UMax))
+        {
+            os << "partner " << k << ": velocity " << text(p->U) << " (valid:"
+               << " finite, each component within +-" << UMax << " m/s)";
+        }
+        else if (!bounded(p->omega, omegaMax))
+        {
+            os << "partner " << k << ": spin " << text(p->omega) << " (valid:"
+               << " finite, each component within +-" << omegaMax
+               << " rad/s)";
+        }
+    }
+    return os.str();
 }
 
 

@@ -29,7 +29,6 @@ License
 #include "error.H"
 #include <fstream>
 #include <sstream>
-#include <cmath>
 #include <unistd.h>
 #include <sys/stat.h>
 
@@ -50,141 +49,41 @@ long long fileBytes(const Foam::fileName& file)
 }
 
 
-//- The bounds of a record's values (doc/eventLog.md, "Valid records";
-//  aggloTools.eventlog checks the same): wide enough for any particle of
-//  a flow, narrow enough that the kernels' products (masses, energies,
-//  moments of inertia) stay finite, so that a corrupt record is refused
-//  instead of stopping the replay with a floating-point exception
-const Foam::scalar dMin = 1e-9, dMax = 1;           // m
-const Foam::scalar rhoMin = 1e-3, rhoMax = 1e6;     // kg/m3
-const Foam::scalar xMax = 1e6;                      // m, per component
-const Foam::scalar UMax = 1e4;                      // m/s, per component
-const Foam::scalar omegaMax = 1e12;                 // rad/s, per component
-
-
-//- A vector as text, (x y z)
-std::string text(const Foam::vector& v)
-{
-    std::ostringstream os;
-    os << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
-    return os.str();
-}
-
-
-//- True if every component of v is finite and within +-bound
-bool bounded(const Foam::vector& v, const Foam::scalar bound)
-{
-    for (const Foam::scalar c : {v.x(), v.y(), v.z()})
-    {
-        if (!(std::isfinite(c) && std::abs(c) <= bound))
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-
-//- The reason why a record read from a log cannot be a logged collision
-//  (empty if it can be one); buf: the record as read
-std::string invalidRecord(const Foam::collisionEvent& e, const char* buf)
-{
-    const int nBranches = Foam::collisionOutcome::branchTypeNames.size();
-    const Foam::label agglomerates =
-        Foam::collisionEvent::agglomeratesByte(buf);
-
-    std::ostringstream os;
-    if (e.timeIndex < 0)
-    {
-        os << "time index " << e.timeIndex << " (valid: >= 0)";
-    }
-    else if (e.category < 0 || e.category > 2)
-    {
-        os << "category " << e.category << " (valid: 0 first, 1 repeat,"
-           << " 2 overlap at the start of the step)";
-    }
-    else if
-    (
-        e.branch != Foam::collisionEvent::ghostBranch
-     && (e.branch < 0 || e.branch >= nBranches)
-    )
-    {
-        os << "branch " << e.branch << " (valid: 0-"
-           << nBranches - 1 << ", "
-           << Foam::collisionEvent::ghostBranch << " ghost)";
-    }
-    else if (agglomerates < 0 || agglomerates > 1)
-    {
-        os << "agglomerates " << agglomerates << " (valid: 0, 1)";
-    }
-    else if (e.type < 0 || e.type > 1)
-    {
-        os << "collision type " << e.type << " (valid: 0 sticking,"
-           << " 1 sliding)";
-    }
-    else if (!std::isfinite(e.time))
-    {
-        os << "contact time " << e.time << " (valid: finite)";
-    }
-    for (const Foam::hardSphereState* p : {&e.p1, &e.p2})
-    {
-        if (!os.str().empty())
-        {
-            break;
-        }
-        const int k = p == &e.p1 ? 1 : 2;
-        if (!(std::isfinite(p->d) && p->d >= dMin && p->d <= dMax))
-        {
-            os << "partner " << k << ": d " << p->d << " (valid: "
-               << dMin << " - " << dMax << " m)";
-        }
-        else if
-        (
-            !(std::isfinite(p->rho) && p->rho >= rhoMin && p->rho <= rhoMax)
-        )
-        {
-            os << "partner " << k << ": rho " << p->rho << " (valid: "
-               << rhoMin << " - " << rhoMax << " kg/m3)";
-        }
-        else if (p->nPrimary < 1)
-        {
-            os << "partner " << k << ": nPrimary " << p->nPrimary
-               << " (valid: >= 1)";
-        }
-        else if (!bounded(p->x, xMax))
-        {
-            os << "partner " << k << ": position " << text(p->x) << " (valid:"
-               << " finite, each component within +-" << xMax << " m)";
-        }
-        else if (!bounded(p->U, UMax))
-        {
-            os << "partner " << k << ": velocity " << text(p->U) << " (valid:"
-               << " finite, each component within +-" << UMax << " m/s)";
-        }
-        else if (!bounded(p->omega, omegaMax))
-        {
-            os << "partner " << k << ": spin " << text(p->omega) << " (valid:"
-               << " finite, each component within +-" << omegaMax
-               << " rad/s)";
-        }
-    }
-    return os.str();
-}
-
-
-void checkHeader(std::istream& is, const Foam::fileName& file)
+//- Check the layout of the header and return the branches it names
+Foam::wordList checkHeader(std::istream& is, const Foam::fileName& file)
 {
     std::string head(Foam::collisionEventFile::headerBytes, ' ');
     is.read(&head[0], head.size());
-    const std::string want(Foam::collisionEventFile::header());
+    const std::string want
+    (
+        Foam::collisionEventFile::layout() + " branches "
+    );
     if (!is || head.compare(0, want.size(), want) != 0)
     {
         FatalErrorInFunction
             << "Collision event file " << file << " does not start with"
             << " the header of this build:" << Foam::nl << "    " << want
-            << Foam::nl << "(another layout or machine, or not an event"
-            << " file)" << Foam::exit(Foam::FatalError);
+            << "<names>" << Foam::nl << "(another layout or machine, or"
+            << " not an event file)" << Foam::exit(Foam::FatalError);
     }
+
+    std::istringstream names(head.substr(want.size()));
+    std::string list;
+    names >> list;
+    Foam::wordList branches;
+    std::istringstream items(list);
+    std::string name;
+    while (std::getline(items, name, ','))
+    {
+        branches.append(Foam::word(name));
+    }
+    if (branches.empty())
+    {
+        FatalErrorInFunction
+            << "Collision event file " << file << ": the header names no"
+            << " branch" << Foam::exit(Foam::FatalError);
+    }
+    return branches;
 }
 
 } // End anonymous namespace
@@ -197,35 +96,73 @@ const std::size_t Foam::collisionEventFile::headerBytes;
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-std::string Foam::collisionEventFile::header()
+std::string Foam::collisionEventFile::layout()
 {
     const int one = 1;
     const bool lsb = *reinterpret_cast<const char*>(&one) == 1;
     std::ostringstream os;
-    os  << "aggloCollisionEvents 1 recordBytes "
+    os  << "aggloCollisionEvents 2 recordBytes "
         << collisionEvent::recordBytes << " arch "
         << (lsb ? "LSB" : "MSB") << ";label=32;scalar=64";
     return os.str();
 }
 
 
+std::string Foam::collisionEventFile::header(const wordList& branches)
+{
+    std::string head(layout() + " branches ");
+    forAll(branches, b)
+    {
+        head += (b ? "," : "") + std::string(branches[b]);
+    }
+    if (branches.empty() || head.size() >= headerBytes)
+    {
+        FatalErrorInFunction
+            << "The branch names " << branches << " do not fit the "
+            << label(headerBytes) << "-byte header of the collision event"
+            << " log (at least one, " << label(headerBytes - 1)
+            << " characters in all with the layout)" << exit(FatalError);
+    }
+    return head;
+}
+
+
 void Foam::collisionEventFile::append
 (
     const fileName& file,
-    const UList<collisionEvent>& events
+    const UList<collisionEvent>& events,
+    const wordList& branches
 )
 {
-    const long long size = fileBytes(file);
+    long long size = fileBytes(file);
     if (size > 0)
     {
         std::ifstream is(file.c_str(), std::ios::binary);
-        checkHeader(is, file);
+        const wordList inFile(checkHeader(is, file));
+        if (inFile != branches)
+        {
+            if (size > static_cast<long long>(headerBytes))
+            {
+                FatalErrorInFunction
+                    << "Collision event file " << file << " holds events"
+                    << " of an agglomeration model with the branches "
+                    << inFile << "; this run's model has " << branches
+                    << ": move the folder away to start a new log"
+                    << exit(FatalError);
+            }
+            // No event yet: the header follows this run's model
+            size = 0;
+        }
     }
 
-    std::ofstream os(file.c_str(), std::ios::binary | std::ios::app);
+    std::ofstream os
+    (
+        file.c_str(),
+        std::ios::binary | (size > 0 ? std::ios::app : std::ios::trunc)
+    );
     if (size <= 0)
     {
-        std::string head(header());
+        std::string head(header(branches));
         head.resize(headerBytes - 1, ' ');
         head += '\n';
         os.write(head.data(), head.size());
@@ -248,7 +185,7 @@ void Foam::collisionEventFile::append
 
 
 Foam::List<Foam::collisionEvent>
-Foam::collisionEventFile::read(const fileName& file)
+Foam::collisionEventFile::read(const fileName& file, wordList& branches)
 {
     const long long size = fileBytes(file);
     if (size < 0)
@@ -268,7 +205,7 @@ Foam::collisionEventFile::read(const fileName& file)
     }
 
     std::ifstream is(file.c_str(), std::ios::binary);
-    checkHeader(is, file);
+    branches = checkHeader(is, file);
 
     List<collisionEvent> events(body/collisionEvent::recordBytes);
     char buf[collisionEvent::recordBytes];
@@ -279,7 +216,7 @@ Foam::collisionEventFile::read(const fileName& file)
         e.unpack(buf);
 
         // A corrupt record would be replayed as a collision
-        const std::string why(invalidRecord(e, buf));
+        const std::string why(e.invalid(buf, branches.size()));
         if (!why.empty())
         {
             FatalErrorInFunction

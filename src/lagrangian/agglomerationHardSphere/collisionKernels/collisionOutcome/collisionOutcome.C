@@ -38,47 +38,45 @@ Foam::collisionOutcome::collisionTypeNames
 });
 
 
-const Foam::Enum<Foam::collisionOutcome::branchType>
-Foam::collisionOutcome::branchTypeNames
+const Foam::wordList Foam::collisionOutcome::commonValueNames
 ({
-    { branchType::REBOUND, "rebound" },
-    { branchType::AGGLOMERATE, "agglomerate" },
-    { branchType::EQ21, "eq21" },
-    { branchType::EQ65, "eq65" },
-    { branchType::CASE_I, "caseI" },
-    { branchType::CASE_II, "caseII" },
-    { branchType::CASE_III_REBOUND, "caseIIIrebound" },
+    "fna", "dKEformation", "spinCapped"
 });
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::collisionOutcome::collisionOutcome()
+Foam::collisionOutcome::collisionOutcome(const label nValues)
 :
     type(STICKING),
-    branch(REBOUND),
+    branch(0),
     agglomerates(false),
     p1(),
     p2(),
     agglomerate(),
     fna(std::numeric_limits<scalar>::quiet_NaN()),
-    fnc(fna),
-    fncStar(fna),
-    tStar(fna),
-    dEvdW(fna),
-    EkinPlus(fna),
-    ErotPlus(fna),
-    ErotAg(fna),
-    kn2(fna),
-    kt2(fna),
-    komega2(fna),
-    deltaL(fna),
-    critI(false),
-    critII(false),
-    spinClamped(false),
     dKEformation(fna),
-    spinCapped(false)
+    spinCapped(false),
+    values(nValues, fna)
 {}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::collisionOutcome::reset(const label nValues)
+{
+    type = STICKING;
+    branch = 0;
+    agglomerates = false;
+    p1 = hardSphereState();
+    p2 = hardSphereState();
+    agglomerate = hardSphereState();
+    fna = std::numeric_limits<scalar>::quiet_NaN();
+    dKEformation = fna;
+    spinCapped = false;
+    values.resize(nValues);
+    values = fna;
+}
 
 
 // ************************************************************************* //

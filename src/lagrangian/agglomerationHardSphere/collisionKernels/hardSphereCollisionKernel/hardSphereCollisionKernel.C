@@ -112,7 +112,7 @@ void Foam::hardSphereCollisionKernel::collide
             << abort(FatalError);
     }
 
-    outcome = collisionOutcome();
+    outcome.reset(agglomeration_->valueNames().size());
     agglomeration_->collide(pair, p1, p2, outcome);
 
     if (outcome.agglomerates)

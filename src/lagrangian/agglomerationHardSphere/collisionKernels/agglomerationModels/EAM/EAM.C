@@ -72,8 +72,42 @@ Foam::agglomerationModels::EAM::EAM
             projectionType::PAPER
         )
     ),
-    alletto2014_(alletto2014)
+    alletto2014_(alletto2014),
+    branchNames_
+    (
+        alletto2014
+      ? wordList({"eq21", "caseI", "caseII", "caseIIIrebound"})
+      : wordList({"eq21", "eq65", "caseI", "caseII"})
+    ),
+    valueNames_
+    (
+        alletto2014
+      ? wordList
+        ({
+            "dEvdW", "EkinPlus", "ErotPlus", "ErotAg", "kn2", "kt2",
+            "deltaL", "komega2", "spinClamped"
+        })
+      : wordList
+        ({
+            "dEvdW", "EkinPlus", "ErotPlus", "ErotAg", "kn2", "kt2",
+            "deltaL"
+        })
+    ),
+    counterNames_
+    (
+        alletto2014
+      ? wordList({"nCaseII", "nSpinClamped"})
+      : wordList({"nCaseII"})
+    ),
+    branchCode_(-1)
 {
+    const char* family[] =
+        {"eq21", "eq65", "caseI", "caseII", "caseIIIrebound"};
+    forAll(branchCode_, b)
+    {
+        branchCode_[b] = branchNames_.find(family[b]);
+    }
+
     if (coeffDict_.found("variant", keyType::LITERAL))
     {
         FatalIOErrorInFunction(coeffDict_)
@@ -251,24 +285,25 @@ void Foam::agglomerationModels::EAM::collide
         }
     }
 
-    outcome.dEvdW = dE;
-    outcome.EkinPlus = EkinPlus;
-    outcome.ErotPlus = ErotPlus;
-    outcome.ErotAg = ErotAg;
-    outcome.kn2 = kn2;
-    outcome.kt2 = kt2;
+    scalarList& value = outcome.values;
+    value[DE_VDW] = dE;
+    value[EKIN_PLUS] = EkinPlus;
+    value[EROT_PLUS] = ErotPlus;
+    value[EROT_AG] = ErotAg;
+    value[KN2] = kn2;
+    value[KT2] = kt2;
 
     // 4. Agglomeration: AB16 Eq. 21, or Eq. 65 (corrected model only)
     if (dE >= EkinPlus + ErotPlus - ErotAg)
     {
         outcome.agglomerates = true;
-        outcome.branch = collisionOutcome::EQ21;
+        outcome.branch = branchCode_[EQ21];
         return;
     }
     if (!alletto2014_ && kn2 <= 0 && kt2 < 0)
     {
         outcome.agglomerates = true;
-        outcome.branch = collisionOutcome::EQ65;
+        outcome.branch = branchCode_[EQ65];
         return;
     }
 
@@ -278,19 +313,19 @@ void Foam::agglomerationModels::EAM::collide
     scalar komega = 1;
     if (kn2 > 0)
     {
-        outcome.branch = collisionOutcome::CASE_I;
+        outcome.branch = branchCode_[CASE_I];
         kn = std::sqrt(kn2);
     }
     else if (kt2 >= 0)
     {
-        outcome.branch = collisionOutcome::CASE_II;
+        outcome.branch = branchCode_[CASE_II];
         kn = 0;
         kt = std::sqrt(kt2);
     }
     else
     {
         // Only reached by alletto2014
-        outcome.branch = collisionOutcome::CASE_III_REBOUND;
+        outcome.branch = branchCode_[CASE_III_REBOUND];
         kn = 0;
         kt = 0;
         const scalar X = dE - En - Et;
@@ -298,10 +333,10 @@ void Foam::agglomerationModels::EAM::collide
         {
             // AB16 Eq. 64; beta of Eq. 62 cancels
             const scalar komega2 = 1 - X/ErotPlus;
-            outcome.komega2 = komega2;
+            value[KOMEGA2] = komega2;
+            outcome.setFlag(SPIN_CLAMPED, komega2 < 0);
             if (komega2 < 0)
             {
-                outcome.spinClamped = true;
                 komega = 0;
             }
             else
@@ -326,7 +361,33 @@ void Foam::agglomerationModels::EAM::collide
 
     // doc/models.md 5.1, A6: orbital angular momentum change (non-zero
     // in case II)
-    outcome.deltaL = mag(mHat*pair.ell()*(n ^ fAg));
+    value[DELTA_L] = mag(mHat*pair.ell()*(n ^ fAg));
+}
+
+
+const Foam::wordList& Foam::agglomerationModels::EAM::sumNames() const
+{
+    static const wordList names({"sumDeltaL"});
+    return names;
+}
+
+
+void Foam::agglomerationModels::EAM::count
+(
+    const collisionOutcome& outcome,
+    UList<label>& counts,
+    UList<scalar>& sums
+) const
+{
+    if (outcome.branch == branchCode_[CASE_II])
+    {
+        ++counts[0];
+        sums[0] += outcome.values[DELTA_L];
+    }
+    if (alletto2014_ && outcome.flag(SPIN_CLAMPED))
+    {
+        ++counts[1];
+    }
 }
 
 

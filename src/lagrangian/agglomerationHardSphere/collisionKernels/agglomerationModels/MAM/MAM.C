@@ -186,6 +186,52 @@ Foam::scalar Foam::agglomerationModels::MAM::vanDerWaalsForce
 }
 
 
+const Foam::wordList&
+Foam::agglomerationModels::MAM::branchNames() const
+{
+    static const wordList names({"rebound", "agglomerate"});
+    return names;
+}
+
+
+const Foam::wordList&
+Foam::agglomerationModels::MAM::valueNames() const
+{
+    static const wordList names
+    ({
+        "fnc", "fncStar", "tStar", "critI", "critII"
+    });
+    return names;
+}
+
+
+const Foam::wordList&
+Foam::agglomerationModels::MAM::counterNames() const
+{
+    static const wordList names({"nMAMslidingCritII"});
+    return names;
+}
+
+
+void Foam::agglomerationModels::MAM::count
+(
+    const collisionOutcome& outcome,
+    UList<label>& counts,
+    UList<scalar>&
+) const
+{
+    if
+    (
+        !outcome.isSticking()
+     && outcome.flag(CRIT_I)
+     && outcome.flag(CRIT_II)
+    )
+    {
+        ++counts[0];
+    }
+}
+
+
 void Foam::agglomerationModels::MAM::collide
 (
     const binaryCollision& pair,
@@ -224,11 +270,11 @@ void Foam::agglomerationModels::MAM::collide
     outcome.type =
         isSticking ? collisionOutcome::STICKING : collisionOutcome::SLIDING;
     outcome.fna = fna;
-    outcome.fnc = fnc;
-    outcome.fncStar = fncStar;
-    outcome.tStar = tStar;
-    outcome.critI = critI;
-    outcome.critII = critII;
+    outcome.values[FNC] = fnc;
+    outcome.values[FNC_STAR] = fncStar;
+    outcome.values[T_STAR] = tStar;
+    outcome.setFlag(CRIT_I, critI);
+    outcome.setFlag(CRIT_II, critII);
     outcome.p1 = p1;
     outcome.p2 = p2;
 
@@ -243,7 +289,7 @@ void Foam::agglomerationModels::MAM::collide
     )
     {
         outcome.agglomerates = true;
-        outcome.branch = collisionOutcome::AGGLOMERATE;
+        outcome.branch = AGGLOMERATE;
         return;
     }
 
@@ -252,7 +298,7 @@ void Foam::agglomerationModels::MAM::collide
     const vector fHat = pair.impulse(coeffs_, fna - fncStar, fF, stick);
 
     outcome.agglomerates = false;
-    outcome.branch = collisionOutcome::REBOUND;
+    outcome.branch = REBOUND;
     pair.apply(fHat, outcome.p1, outcome.p2);
 }
 

@@ -90,7 +90,6 @@ void Foam::agglomerationModel::reboundWithoutCohesion
 
     outcome.type =
         isSticking ? collisionOutcome::STICKING : collisionOutcome::SLIDING;
-    outcome.branch = collisionOutcome::REBOUND;
     outcome.agglomerates = false;
     outcome.fna = fna;
     outcome.p1 = p1;
@@ -126,6 +125,54 @@ Foam::scalar Foam::agglomerationModel::impactSpeed
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::wordList& Foam::agglomerationModel::noNames()
+{
+    static const wordList none;
+    return none;
+}
+
+
+const Foam::wordList& Foam::agglomerationModel::valueNames() const
+{
+    return noNames();
+}
+
+
+const Foam::wordList& Foam::agglomerationModel::counterNames() const
+{
+    return noNames();
+}
+
+
+const Foam::wordList& Foam::agglomerationModel::sumNames() const
+{
+    return noNames();
+}
+
+
+void Foam::agglomerationModel::count
+(
+    const collisionOutcome&,
+    UList<label>&,
+    UList<scalar>&
+) const
+{}
+
+
+Foam::label Foam::agglomerationModel::branchCode(const word& name) const
+{
+    const label code = branchNames().find(name);
+    if (code < 0)
+    {
+        FatalErrorInFunction
+            << "Agglomeration model " << type() << " has no branch "
+            << name << "; its branches: " << branchNames()
+            << exit(FatalError);
+    }
+    return code;
+}
+
 
 void Foam::agglomerationModel::writeOptions(Ostream& os) const
 {

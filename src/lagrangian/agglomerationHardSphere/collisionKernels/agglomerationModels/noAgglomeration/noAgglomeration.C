@@ -60,6 +60,14 @@ Foam::agglomerationModels::noAgglomeration::noAgglomeration
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::wordList&
+Foam::agglomerationModels::noAgglomeration::branchNames() const
+{
+    static const wordList names({"rebound"});
+    return names;
+}
+
+
 void Foam::agglomerationModels::noAgglomeration::collide
 (
     const binaryCollision& pair,
@@ -69,6 +77,7 @@ void Foam::agglomerationModels::noAgglomeration::collide
 ) const
 {
     reboundWithoutCohesion(pair, p1, p2, outcome);
+    outcome.branch = 0;
 }
 
 

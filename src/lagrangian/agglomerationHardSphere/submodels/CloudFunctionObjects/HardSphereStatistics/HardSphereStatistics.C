@@ -91,15 +91,16 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
         cloud.template lookupObject<hardSphereStep>(hs::typeName);
     hardSphereStatisticsAccumulator& st = stats_();
 
-    // Counters
+    // Counters (named by the collision stage and its agglomeration model)
+    if (!st.started())
+    {
+        st.start(step.counterNames(), step.sumNames());
+    }
     labelField globalCounts(step.counts);
     reduce(globalCounts, sumOp<labelField>());
-    st.addCounts
-    (
-        globalCounts,
-        returnReduce(step.sumDeltaL, sumOp<scalar>()),
-        returnReduce(step.energyGain, sumOp<scalar>())
-    );
+    scalarField globalSums(step.sums);
+    reduce(globalSums, sumOp<scalarField>());
+    st.addCounts(globalCounts, globalSums);
 
     // Particles
     label nParticles = 0;

@@ -41,29 +41,23 @@ Foam::fileName Foam::hardSphereStatisticsAccumulator::baseDir() const
 }
 
 
-void Foam::hardSphereStatisticsAccumulator::readState()
+void Foam::hardSphereStatisticsAccumulator::readCounters()
 {
     if (!state_.found("counters"))
     {
         return;
     }
 
+    // A counter or sum that the state lacks started with this run (another
+    // agglomeration model before the restart)
     const dictionary& cd = state_.subDict("counters");
     forAll(counters_, i)
     {
-        counters_[i] =
-            cd.getOrDefault<label>
-            (
-                hardSphereStep::counterNames[counterType(i)],
-                0
-            );
+        counters_[i] = cd.getOrDefault<label>(counterNames_[i], 0);
     }
-    sumDeltaL_ = state_.getOrDefault<scalar>("sumDeltaL", 0);
-    energyGain_ = state_.getOrDefault<scalar>("agglomerationEnergyGain", 0);
-
-    if (profiles_.valid() && state_.found("profiles"))
+    forAll(sums_, i)
     {
-        profiles_->read(state_.subDict("profiles"));
+        sums_[i] = state_.getOrDefault<scalar>(sumNames_[i], 0);
     }
 }
 
@@ -73,11 +67,13 @@ void Foam::hardSphereStatisticsAccumulator::updateState()
     dictionary cd;
     forAll(counters_, i)
     {
-        cd.add(hardSphereStep::counterNames[counterType(i)], counters_[i]);
+        cd.add(counterNames_[i], counters_[i]);
     }
     state_.set("counters", cd);
-    state_.set("sumDeltaL", sumDeltaL_);
-    state_.set("agglomerationEnergyGain", energyGain_);
+    forAll(sums_, i)
+    {
+        state_.set(sumNames_[i], sums_[i]);
+    }
 
     if (profiles_.valid())
     {
@@ -110,9 +106,11 @@ Foam::hardSphereStatisticsAccumulator::hardSphereStatisticsAccumulator
             false
         )
     ),
-    counters_(hardSphereStep::N_COUNTERS, Zero),
-    sumDeltaL_(0),
-    energyGain_(0),
+    startTime_(mesh.time().timeName()),
+    counterNames_(),
+    sumNames_(),
+    counters_(),
+    sums_(),
     profiles_
     (
         dict.getOrDefault<bool>("profiles", false)
@@ -120,11 +118,30 @@ Foam::hardSphereStatisticsAccumulator::hardSphereStatisticsAccumulator
       : nullptr
     )
 {
-    readState();
+    if (profiles_.valid() && state_.found("profiles"))
+    {
+        profiles_->read(state_.subDict("profiles"));
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::hardSphereStatisticsAccumulator::start
+(
+    const wordList& counterNames,
+    const wordList& sumNames
+)
+{
+    counterNames_ = counterNames;
+    sumNames_ = sumNames;
+    counters_.setSize(counterNames.size(), Zero);
+    sums_.setSize(sumNames.size(), Zero);
+    readCounters();
 
     if (Pstream::master())
     {
-        const fileName dir(baseDir()/mesh.time().timeName());
+        const fileName dir(baseDir()/startTime_);
         mkDir(dir);
         statsFilePtr_.reset(new OFstream(dir/"stats.dat"));
 
@@ -135,30 +152,29 @@ Foam::hardSphereStatisticsAccumulator::hardSphereStatisticsAccumulator
             << " (restart state)" << nl
             << "# Time nParticles nPrimaries nAgglomerates"
             << " nPrimariesInAgglomerates maxPrimaries";
-        forAll(counters_, i)
+        for (const word& name : counterNames_)
         {
-            os  << ' ' << hardSphereStep::counterNames[counterType(i)];
+            os  << ' ' << name;
         }
         os  << " aggRate D10 Dmax mass" << endl;
     }
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
 void Foam::hardSphereStatisticsAccumulator::addCounts
 (
     const List<label>& increments,
-    const scalar sumDeltaL,
-    const scalar energyGain
+    const List<scalar>& sums
 )
 {
     forAll(counters_, i)
     {
         counters_[i] += increments[i];
     }
-    sumDeltaL_ += sumDeltaL;
-    energyGain_ += energyGain;
+    forAll(sums_, i)
+    {
+        sums_[i] += sums[i];
+    }
 }
 
 

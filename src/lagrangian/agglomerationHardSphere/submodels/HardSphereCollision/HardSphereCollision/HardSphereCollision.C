@@ -33,7 +33,7 @@ License
 template<class CloudType>
 void Foam::HardSphereCollision<CloudType>::checkParticles() const
 {
-    if (kernel_.agglomeration().type() == "none")
+    if (!kernel_.agglomeration().cohesive())
     {
         return;
     }
@@ -54,7 +54,7 @@ void Foam::HardSphereCollision<CloudType>::checkParticles() const
             << " both to the same value" << exit(FatalIOError);
     }
 
-    const bool vsm = kernel_.structure().type() == "VSM";
+    const bool vsm = kernel_.structure().primaryDensity();
     label i = 0;
     for (const parcelType& p : this->owner())
     {
@@ -216,10 +216,19 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
         );
     }
 
+    this->step_.setModel(kernel_.agglomeration());
     observers_.append(&this->step_);
     if (coeffs.getOrDefault<bool>("eventLog", false))
     {
-        log_.reset(new collisionEventLog(owner.mesh(), owner.name()));
+        log_.reset
+        (
+            new collisionEventLog
+            (
+                owner.mesh(),
+                owner.name(),
+                kernel_.agglomeration().branchNames()
+            )
+        );
         observers_.append(log_.get());
     }
 

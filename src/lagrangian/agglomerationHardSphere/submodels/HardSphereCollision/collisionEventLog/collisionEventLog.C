@@ -93,7 +93,8 @@ Foam::IOobject recordIO
 Foam::collisionEventLog::collisionEventLog
 (
     const fvMesh& mesh,
-    const word& cloudName
+    const word& cloudName,
+    const wordList& branches
 )
 :
     mesh_(mesh),
@@ -102,6 +103,7 @@ Foam::collisionEventLog::collisionEventLog
         folder(mesh.time(), cloudName)
        /("events" + Foam::name(Pstream::myProcNo()) + ".bin")
     ),
+    branches_(branches),
     buffer_(),
     nWritten_(0),
     cloudName_(cloudName),
@@ -127,7 +129,7 @@ Foam::collisionEventLog::collisionEventLog
     // its file exists from the start (an empty log is a log)
     reduce(removed, sumOp<label>());
     mkDir(dir);
-    collisionEventFile::append(file_, List<collisionEvent>());
+    collisionEventFile::append(file_, List<collisionEvent>(), branches_);
     nInFile_ = collisionEventFile::size(file_);
     if (Pstream::master())
     {
@@ -231,7 +233,7 @@ void Foam::collisionEventLog::flush()
 {
     if (buffer_.size())
     {
-        collisionEventFile::append(file_, buffer_);
+        collisionEventFile::append(file_, buffer_, branches_);
         nWritten_ += buffer_.size();
         nInFile_ += buffer_.size();
         buffer_.clear();

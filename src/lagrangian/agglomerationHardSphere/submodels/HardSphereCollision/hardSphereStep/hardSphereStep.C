@@ -27,6 +27,7 @@ License
 
 #include "hardSphereStep.H"
 #include "collisionOutcome.H"
+#include "agglomerationModel.H"
 #include "objectRegistry.H"
 #include "Time.H"
 
@@ -39,7 +40,7 @@ namespace Foam
 
 
 const Foam::Enum<Foam::hardSphereStep::counterType>
-Foam::hardSphereStep::counterNames
+Foam::hardSphereStep::commonCounterNames
 ({
     { counterType::COL, "nCol" },
     { counterType::COL_FIRST, "nColFirst" },
@@ -54,10 +55,7 @@ Foam::hardSphereStep::counterNames
     { counterType::WALL, "nWall" },
     { counterType::WALL_CENTRE, "nWallCentre" },
     { counterType::STICKING, "nSticking" },
-    { counterType::CASE_II, "nCaseII" },
     { counterType::ENERGY_GAIN, "nEnergyGain" },
-    { counterType::SPIN_CLAMPED, "nSpinClamped" },
-    { counterType::MAM_CRIT_II, "nMAMslidingCritII" },
 });
 
 
@@ -77,23 +75,53 @@ Foam::hardSphereStep::hardSphereStep(const objectRegistry& cloud)
         )
     ),
     counts(N_COUNTERS, Zero),
-    sumDeltaL(0),
-    energyGain(0),
+    sums(1, Zero),
     eventPoint(),
     eventCategory(),
     eventAgglomerates(),
     mass0(-1),
-    nPrimaries0(-1)
+    nPrimaries0(-1),
+    model_(nullptr)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::hardSphereStep::setModel(const agglomerationModel& model)
+{
+    model_ = &model;
+    counts.setSize(N_COUNTERS + model.counterNames().size());
+    sums.setSize(1 + model.sumNames().size());
+    reset();
+}
+
+
+Foam::wordList Foam::hardSphereStep::counterNames() const
+{
+    wordList names(commonCounterNames.names());
+    if (model_)
+    {
+        names.append(model_->counterNames());
+    }
+    return names;
+}
+
+
+Foam::wordList Foam::hardSphereStep::sumNames() const
+{
+    wordList names({"agglomerationEnergyGain"});
+    if (model_)
+    {
+        names.append(model_->sumNames());
+    }
+    return names;
+}
+
+
 void Foam::hardSphereStep::reset()
 {
     counts = 0;
-    sumDeltaL = 0;
-    energyGain = 0;
+    sums = 0;
     eventPoint.clear();
     eventCategory.clear();
     eventAgglomerates.clear();
@@ -166,25 +194,24 @@ void Foam::hardSphereStep::observe(const collisionEventRecord& event)
         if (o.dKEformation > 0)
         {
             ++counts[ENERGY_GAIN];
-            energyGain += o.dKEformation;
+            sums[0] += o.dKEformation;
         }
     }
     if (o.isSticking())
     {
         ++counts[STICKING];
     }
-    if (o.branch == collisionOutcome::CASE_II)
+    if (model_)
     {
-        ++counts[CASE_II];
-        sumDeltaL += o.deltaL;
-    }
-    if (o.spinClamped)
-    {
-        ++counts[SPIN_CLAMPED];
-    }
-    if (!o.isSticking() && o.critI && o.critII)
-    {
-        ++counts[MAM_CRIT_II];
+        // The model's counters and sums follow the common ones
+        SubList<label> modelCounts
+        (
+            counts,
+            counts.size() - N_COUNTERS,
+            N_COUNTERS
+        );
+        SubList<scalar> modelSums(sums, sums.size() - 1, 1);
+        model_->count(o, modelCounts, modelSums);
     }
 }
 
