@@ -181,8 +181,7 @@ Foam::scalar Foam::agglomerationModels::MAM::vanDerWaalsForce
     const scalar d2
 ) const
 {
-    // AB16 Eqs. 23-24
-    return material_.H()*d1*d2/(12*sqr(material_.delta0())*(d1 + d2));
+    return material_.vanDerWaalsForce(d1, d2);
 }
 
 

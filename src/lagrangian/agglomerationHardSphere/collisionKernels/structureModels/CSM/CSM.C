@@ -44,6 +44,15 @@ namespace structureModels
 }
 
 
+// * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- f_pack beyond the table (doc/models.md 4.3)
+    const Foam::scalar fPackLargeDefault = 0.52;
+}
+
+
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
 Foam::scalarList Foam::structureModels::CSM::defaultPackingFractions()
@@ -70,6 +79,20 @@ Foam::scalarList Foam::structureModels::CSM::defaultPackingFractions()
 }
 
 
+Foam::scalar Foam::structureModels::CSM::defaultPackingFraction
+(
+    const label nPrimary
+)
+{
+    static const scalarList f(defaultPackingFractions());
+    if (nPrimary <= 1)
+    {
+        return 1;
+    }
+    return nPrimary < f.size() ? f[nPrimary] : fPackLargeDefault;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::structureModels::CSM::CSM
@@ -80,7 +103,7 @@ Foam::structureModels::CSM::CSM
 :
     structureModel(typeName, dict, material),
     fPack_(defaultPackingFractions()),
-    fPackLarge_(0.52)
+    fPackLarge_(fPackLargeDefault)
 {
     checkCoeffs({"fPackLarge", "packingFractions"});
 

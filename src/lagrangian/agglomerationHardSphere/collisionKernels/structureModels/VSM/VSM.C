@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "VSM.H"
+#include "CSM.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -51,6 +52,14 @@ Foam::structureModels::VSM::VSM
     structureModel(typeName, dict, material)
 {
     checkCoeffs(wordList());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::structureModels::VSM::porosity(const label nPrimary) const
+{
+    return 1 - structureModels::CSM::defaultPackingFraction(nPrimary);
 }
 
 

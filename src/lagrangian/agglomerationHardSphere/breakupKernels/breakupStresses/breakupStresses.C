@@ -1,0 +1,213 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "breakupStresses.H"
+#include "hardSphereInput.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::breakupStresses::mechanismType>
+Foam::breakupStresses::mechanismTypeNames
+({
+    { mechanismType::TURBULENCE, "turbulence" },
+    { mechanismType::DRAG, "drag" },
+    { mechanismType::ROTATION, "rotation" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::breakupStresses::breakupStresses(const dictionary& dict)
+:
+    on_(false),
+    Cv_(0),
+    Ci_(0),
+    Cd_(0),
+    cRot_(0)
+{
+    using namespace hardSphereInput;
+    checkKeys(dict, {"mechanisms", "Cv", "Ci", "Cd", "rotationFactor"});
+
+    const wordList names(dict.get<wordList>("mechanisms"));
+    if (names.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'mechanisms' of " << dict.name() << " is empty"
+            << nl << "    Valid mechanisms: "
+            << flatOutput(mechanismTypeNames.names()) << exit(FatalIOError);
+    }
+    for (const word& name : names)
+    {
+        if (!mechanismTypeNames.found(name))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown mechanism '" << name << "' in entry"
+                << " 'mechanisms' of " << dict.name() << nl
+                << "    Valid mechanisms: "
+                << flatOutput(mechanismTypeNames.names())
+                << exit(FatalIOError);
+        }
+        on_[mechanismTypeNames[name]] = true;
+    }
+
+    // A coefficient is read where its mechanism is on, and only there
+    const bool t = on_[TURBULENCE];
+    const bool d = on_[DRAG];
+    const bool r = on_[ROTATION];
+    const wordList need
+    ({
+        t ? "Cv" : "", t ? "Ci" : "", d ? "Cd" : "",
+        r ? "rotationFactor" : ""
+    });
+    for (const word& key : {"Cv", "Ci", "Cd", "rotationFactor"})
+    {
+        if (dict.found(key) && !need.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' of " << dict.name() << " belongs"
+                << " to a mechanism that is off (mechanisms "
+                << flatOutput(names) << ")" << exit(FatalIOError);
+        }
+    }
+    if (t)
+    {
+        Cv_ = getInRange(dict, "Cv", open(0), open(GREAT));
+        Ci_ = getInRange(dict, "Ci", open(0), open(GREAT));
+    }
+    if (d)
+    {
+        Cd_ = getInRange(dict, "Cd", open(0), open(GREAT));
+    }
+    if (r)
+    {
+        cRot_ = getInRange(dict, "rotationFactor", open(0), open(GREAT));
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::breakupStresses::turbulent
+(
+    const scalar epsilon,
+    const scalar nu,
+    const scalar rhoF,
+    const scalar da
+) const
+{
+    if (!(epsilon > 0))
+    {
+        return 0;
+    }
+
+    // Kolmogorov length [paper: S8]
+    const scalar eta = std::pow(nu*nu*nu/epsilon, 0.25);
+    if (da <= eta)
+    {
+        // Viscous subrange [rec; the group mu (eps/nu)^1/2: paper S5]
+        return Cv_*rhoF*nu*std::sqrt(epsilon/nu);
+    }
+    // Inertial subrange [rec]
+    return Ci_*rhoF*std::cbrt(sqr(epsilon*da));
+}
+
+
+Foam::scalar Foam::breakupStresses::drag
+(
+    const scalar magF,
+    const scalar da
+) const
+{
+    // Mean surface traction [rec]
+    return Cd_*magF/(constant::mathematical::pi*da*da);
+}
+
+
+Foam::scalar Foam::breakupStresses::rotational
+(
+    const scalar rhoA,
+    const vector& omega,
+    const scalar da
+) const
+{
+    // Centrifugal tension across a plane through the spin axis [rec,
+    // doc/breakup.md 1.4]
+    return cRot_*rhoA*magSqr(omega)*da*da;
+}
+
+
+Foam::FixedList<Foam::scalar, 3> Foam::breakupStresses::stresses
+(
+    const load& L,
+    const scalar da,
+    const scalar rhoA
+) const
+{
+    FixedList<scalar, 3> s(Zero);
+    if (on_[TURBULENCE])
+    {
+        s[TURBULENCE] = turbulent(L.epsilon, L.nu, L.rhoF, da);
+    }
+    if (on_[DRAG])
+    {
+        s[DRAG] = drag(mag(L.dragForce), da);
+    }
+    if (on_[ROTATION])
+    {
+        s[ROTATION] = rotational(rhoA, L.omega, da);
+    }
+    return s;
+}
+
+
+void Foam::breakupStresses::write(Ostream& os) const
+{
+    os  << "stresses:";
+    forAll(on_, m)
+    {
+        if (on_[m])
+        {
+            os  << ' ' << mechanismTypeNames[mechanismType(m)];
+        }
+    }
+    if (on_[TURBULENCE])
+    {
+        os  << ", Cv " << Cv_ << ", Ci " << Ci_;
+    }
+    if (on_[DRAG])
+    {
+        os  << ", Cd " << Cd_;
+    }
+    if (on_[ROTATION])
+    {
+        os  << ", rotationFactor " << cRot_;
+    }
+}
+
+
+// ************************************************************************* //
