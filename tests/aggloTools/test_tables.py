@@ -28,19 +28,23 @@ def test_table_columns():
                      "toolongname    2e-07  "]
 
 
-def write_log(path, times, cpu, restart_at=None):
+def write_log(path, times, clock, restart_at=None):
+    """A solver log whose steps end at the wall-clock times `clock`; the
+    CPU time (ExecutionTime) is a third of it, as on a loaded machine."""
     text = "Starting time loop\n"
-    for i, (t, c) in enumerate(zip(times, cpu)):
+    for i, (t, c) in enumerate(zip(times, clock)):
         if restart_at is not None and i == restart_at:
             text += "End\n\nStarting time loop\n"
-        text += f"Time = {t:g}\n\nExecutionTime = {c:g} s  ClockTime = 1 s\n"
+        text += (f"Time = {t:g}\n\nExecutionTime = {c / 3:g} s  "
+                 f"ClockTime = {c:g} s\n")
     path.write_text(text)
 
 
 def test_solver_progress_fraction_and_eta(tmp_path):
     log = tmp_path / "log.aggloPimpleFoam"
     assert progress.solver_progress(log, 1.0, 0.1) is None
-    # 4 of 10 steps done in 8 s: 6 steps left at 2 s each
+    # 4 of 10 steps done in 8 s of the clock: 6 steps left at 2 s each
+    # (the CPU time would say 4 s)
     write_log(log, [0.1, 0.2, 0.3, 0.4], [2, 4, 6, 8])
     t, frac, eta = progress.solver_progress(log, 1.0, 0.1)
     assert t == pytest.approx(0.4) and frac == pytest.approx(0.4)

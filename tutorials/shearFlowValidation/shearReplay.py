@@ -4,8 +4,9 @@ replayed through EAM and MAM at e_n = 0.97, 0.80 and 0.60 (doc/eventLog.md):
 alpha per first contact of each run's own first-contact ensemble, with
 95 % intervals, against van de Ven & Mason's alpha_th.
 
-    shearReplay.py PRESET     results/PRESET: replay.json, replay.txt,
-                              alphaReplay<run>.png (nothing without logs)
+    shearReplay.py PRESET [OUT]   OUT (default results/PRESET): replay.json,
+                                  replay.txt, alphaReplay<run>.png
+                                  (nothing without logs)
 
 The replay freezes each run's collisions: every first contact meets its
 partner as it did in the run, only the outcome is computed anew; what a
@@ -68,7 +69,7 @@ def replay(preset, runs_dir=None, out_dir=None):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
-    replay(sys.argv[1])
+    replay(sys.argv[1], None, sys.argv[2] if len(sys.argv) == 3 else None)
     sys.exit(0)

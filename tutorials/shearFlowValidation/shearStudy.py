@@ -7,7 +7,8 @@ each variant's kernels replay.
 
     shearStudy.py list PRESET                 the runs: "variant run" lines
     shearStudy.py settings PRESET VARIANT RUN caseSettings of one run
-    shearStudy.py post PRESET                 results/study[-PRESET]:
+    shearStudy.py post PRESET [OUT]           OUT (default
+                                              results/study[-PRESET]):
                                               study.json, study.txt, plots
                                               (exit 1 if a run is missing)
 
@@ -391,8 +392,8 @@ def main(argv):
     if len(argv) == 4 and argv[0] == "settings":
         print(shearFlow.settings_text(run_settings(*argv[1:])))
         return 0
-    if len(argv) == 2 and argv[0] == "post":
-        return post(argv[1])
+    if len(argv) in (2, 3) and argv[0] == "post":
+        return post(argv[1], None, argv[2] if len(argv) == 3 else None)
     print(__doc__)
     return 2
 

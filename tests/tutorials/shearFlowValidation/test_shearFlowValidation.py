@@ -87,7 +87,7 @@ def ci_results(tmp_path_factory, foam_env):
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True, timeout=1800)
     (tut / "log.Allrun").write_text(res.stdout)
-    out = tut / "results" / "ci"
+    out = tut / "runs" / "ci" / "report"
     assert (out / "summary.json").exists(), res.stdout[-3000:]
     return res, json.loads((out / "summary.json").read_text()), tut
 
@@ -96,8 +96,11 @@ def test_ci_regression_table(ci_results):
     """The Allrun prints the regression table, saves it, exits 0 with no
     FAIL row, and writes the plots."""
     res, summary, tut = ci_results
-    out = tut / "results" / "ci"
+    out = tut / "runs" / "ci" / "report"
     assert "shearFlowValidation regression, preset ci" in res.stdout
+    # the report goes with the run; nothing is written into results/
+    assert not (tut / "results").exists()
+    assert f"Results: {tut}/runs/ci/report" in res.stdout
     assert (out / "regression.txt").read_text().strip().endswith("0 FAIL")
     assert res.returncode == 0, res.stdout[-3000:]
     # every plot shows data (coloured lines or markers)
@@ -148,7 +151,7 @@ def test_ci_replay_of_the_event_logs(ci_results):
     agglomerates less often on the same collisions (EAM: less rebound
     energy; MAM: a larger cohesive share)."""
     _, s, tut = ci_results
-    rep = json.loads((tut / "results/ci/replay.json").read_text())
+    rep = json.loads((tut / "runs/ci/report/replay.json").read_text())
     assert sorted(rep["ensembles"]) == ["EAM", "MAM", "detect"]
     for name in ("EAM", "MAM"):
         res = rep["ensembles"][name]
@@ -187,11 +190,14 @@ def ci_study(tmp_path_factory, foam_env):
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True, timeout=1800)
     (tut / "log.Allrun").write_text(res.stdout)
-    out = tut / "results" / "study-ci"
+    out = tut / "runs" / "ci" / "study" / "report"
     assert res.returncode == 0, res.stdout[-3000:]
+    # a plain run leaves the committed results as they are
+    assert not (tut / "results" / "study-ci").exists()
     return json.loads((out / "study.json").read_text()), tut
 
 
+@pytest.mark.slow
 def test_ci_study_counts(ci_study):
     """Each variant's counts add up by category (the event log against the
     statistics' counters), and the tutorial's default variant is the
@@ -223,6 +229,7 @@ def test_ci_study_counts(ci_study):
         assert d[m]["N_col_first"] == ref[m]["N_col_first"]
 
 
+@pytest.mark.slow
 def test_ci_study_undisturbed_and_diagnosis(ci_study):
     """The undisturbed ensemble (without fluid torque) replayed through
     the default kernels is the committed ci replay of the tutorial's

@@ -675,11 +675,15 @@ def search_checks(case_dir):
         r"pairSearchCheck: (\d+) candidate pairs, identical", text)]
 
 
-@pytest.mark.parametrize("kind,ranks", [("gas", 0), ("fast", 0),
-                                        ("wall", 0), ("poly", 0),
-                                        ("stream", 0), ("gas", 2),
-                                        ("fast", 2), ("wall", 2),
-                                        ("stream", 2)])
+# The fast and stream boxes take 1-3 minutes each on 2 cores: -m slow
+SLOW = pytest.mark.slow
+
+
+@pytest.mark.parametrize("kind,ranks", [
+    ("gas", 0), pytest.param("fast", 0, marks=SLOW), ("wall", 0),
+    ("poly", 0), pytest.param("stream", 0, marks=SLOW), ("gas", 2),
+    pytest.param("fast", 2, marks=SLOW), ("wall", 2),
+    pytest.param("stream", 2, marks=SLOW)])
 def test_pair_search_matches_brute_force(case_dir, foam_env, kind, ranks):
     """The particleGrid pair search finds exactly the candidate pairs of
     the O(N^2) search over all particles and all periodic images (the

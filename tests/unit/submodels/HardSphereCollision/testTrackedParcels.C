@@ -12,7 +12,8 @@
       parcels to be moved or removed; the lists are empty after;
     - audit: the mass and primaries after the stage against those before
       (auditBefore sums them over the cloud): silent within 1e-11 relative,
-      fatal (or a warning) beyond, nothing if the stage did not run.
+      fatal beyond, nothing if the stage did not run; auditAfter sums the
+      cloud after the stage and stops on a parcel that lost mass.
 \*---------------------------------------------------------------------------*/
 
 #include "TrackedParcels.H"
@@ -160,7 +161,7 @@ TEST(hardSphereStep, massAudit)
     hardSphereStep step(runTime());
 
     // The stage did not run: nothing to audit
-    EXPECT_EQ(errorMessage([&]{ step.audit(1, 1, true); }), "");
+    EXPECT_EQ(errorMessage([&]{ step.audit(1, 1); }), "");
 
     testCloud cloud;
     cloud.parcels.resize(3);
@@ -173,23 +174,30 @@ TEST(hardSphereStep, massAudit)
     EXPECT_NEAR(step.mass0, 6e-12, 1e-27);
     EXPECT_EQ(step.nPrimaries0, 6);
 
-    EXPECT_EQ(errorMessage([&]{ step.audit(6e-12*(1 + 5e-12), 6, true); }), "");
+    EXPECT_EQ(errorMessage([&]{ step.audit(6e-12*(1 + 5e-12), 6); }), "");
 
     const std::string mass
     (
-        errorMessage([&]{ step.audit(6e-12*(1 + 2e-11), 6, true); })
+        errorMessage([&]{ step.audit(6e-12*(1 + 2e-11), 6); })
     );
     EXPECT_NE(mass.find("not conserved"), std::string::npos) << mass;
 
     const std::string primaries
     (
-        errorMessage([&]{ step.audit(6e-12, 5, true); })
+        errorMessage([&]{ step.audit(6e-12, 5); })
     );
     EXPECT_NE(primaries.find("primaries 6 -> 5"), std::string::npos)
         << primaries;
 
-    // Without debug a warning, no error
-    EXPECT_EQ(errorMessage([&]{ step.audit(6e-12, 5, false); }), "");
+    // The cloud's sums after the stage: unchanged passes, a parcel that
+    // lost mass stops the run
+    EXPECT_EQ(errorMessage([&]{ step.auditAfter(cloud); }), "");
+    cloud.parcels.begin()->mass_ *= 0.999;
+    EXPECT_NE
+    (
+        errorMessage([&]{ step.auditAfter(cloud); }).find("not conserved"),
+        std::string::npos
+    );
 
     // The record is in the registry under its type name
     EXPECT_TRUE(runTime().foundObject<hardSphereStep>("hardSphereStep"));

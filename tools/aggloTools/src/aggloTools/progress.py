@@ -17,8 +17,10 @@ def solver_progress(log, t_end, dt):
     """(t, frac, eta) of the solver writing log: its latest time t, the
     fraction of this invocation done (from its first step, dt before the
     first `Time =` after the last `Starting time loop`, to t_end) and the
-    ETA in seconds from the execution time so far (None before the first
-    step reports one); None if no step has been logged."""
+    ETA in seconds from the wall-clock time so far (the log's ClockTime:
+    on a loaded machine the CPU time of ExecutionTime runs slower than
+    the clock; None before the first step reports one); None if no step
+    has been logged."""
     log = Path(log)
     if not log.exists():
         return None
@@ -30,9 +32,9 @@ def solver_progress(log, t_end, dt):
         return None
     t = float(times[-1])
     t0 = float(times[0]) - dt
-    cpu = re.findall(r"ExecutionTime = ([0-9.eE+-]+) s", text[start:])
+    clock = re.findall(r"ClockTime = ([0-9.eE+-]+) s", text[start:])
     frac = (t - t0) / max(t_end - t0, 1e-30)
-    eta = (float(cpu[-1]) * (1 - frac) / frac if cpu and frac > 0
+    eta = (float(clock[-1]) * (1 - frac) / frac if clock and frac > 0
            else None)
     return t, min(frac, 1.0), eta
 

@@ -294,6 +294,9 @@ void Foam::HardSphereCloud<CloudType>::motion
         }
 
         this->updateCellOccupancy();
+
+        // The mass audit of the stage, in every run and build
+        collisionModel_->step().auditAfter(*this);
     }
 
     // A written time is where a restart starts: the next step computes

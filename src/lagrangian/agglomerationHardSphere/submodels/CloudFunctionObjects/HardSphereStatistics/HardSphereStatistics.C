@@ -174,9 +174,6 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
     reduce(Dmax, maxOp<scalar>());
     reduce(mass, sumOp<scalar>());
 
-    // Audit of the collision stage
-    step.audit(mass, nPrimaries, Cloud<parcelType>::debug);
-
     if (profiles)
     {
         // Events at their contact points

@@ -133,8 +133,7 @@ void Foam::hardSphereStep::reset()
 void Foam::hardSphereStep::audit
 (
     const scalar mass,
-    const label nPrimaries,
-    const bool fatal
+    const label nPrimaries
 ) const
 {
     if
@@ -149,18 +148,11 @@ void Foam::hardSphereStep::audit
         return;
     }
 
-    if (fatal)
-    {
-        FatalErrorInFunction
-            << "Particle mass or primaries not conserved by the"
-            << " collision stage: mass " << mass0 << " -> " << mass
-            << ", primaries " << nPrimaries0 << " -> " << nPrimaries
-            << exit(FatalError);
-    }
-    WarningInFunction
+    FatalErrorInFunction
         << "Particle mass or primaries not conserved by the"
         << " collision stage: mass " << mass0 << " -> " << mass
-        << ", primaries " << nPrimaries0 << " -> " << nPrimaries << endl;
+        << ", primaries " << nPrimaries0 << " -> " << nPrimaries
+        << exit(FatalError);
 }
 
 

@@ -45,4 +45,20 @@ void Foam::hardSphereStep::auditBefore(const CloudType& cloud)
 }
 
 
+template<class CloudType>
+void Foam::hardSphereStep::auditAfter(const CloudType& cloud) const
+{
+    scalar mass = 0;
+    label nPrimaries = 0;
+    for (const auto& p : cloud)
+    {
+        mass += p.nParticle()*p.mass();
+        nPrimaries += p.nPrimary();
+    }
+    reduce(mass, sumOp<scalar>());
+    reduce(nPrimaries, sumOp<label>());
+    audit(mass, nPrimaries);
+}
+
+
 // ************************************************************************* //
