@@ -84,7 +84,7 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
         t ? "Cv" : "", t ? "Ci" : "", d ? "Cd" : "",
         r ? "rotationFactor" : ""
     });
-    for (const word& key : {"Cv", "Ci", "Cd", "rotationFactor"})
+    for (const char* key : {"Cv", "Ci", "Cd", "rotationFactor"})
     {
         if (dict.found(key) && !need.found(key))
         {
