@@ -78,6 +78,8 @@ def test_header_names_the_branches(tmp_path):
     assert len(eventlog.read_file(f / "events1.bin")) == 1
     with pytest.raises(ValueError, match="different branches"):
         eventlog.branches(tmp_path)
+    with pytest.raises(ValueError, match="different branches"):
+        eventlog.read_events(tmp_path)
     old = ("aggloCollisionEvents 1 recordBytes 220 arch LSB;label=32;"
            "scalar=64").encode().ljust(eventlog.HEADER_BYTES, b" ")
     (f / "events1.bin").write_bytes(old + r.tobytes())

@@ -155,11 +155,11 @@ def branches(case, cloud="kinematicCloud"):
 
 def read_events(case, cloud="kinematicCloud"):
     """Every event of the case's logs (all ranks), in the order of the
-    replay: time index, contact time, then the ids."""
+    replay: time index, contact time, then the ids. The files must name
+    the same branches (ValueError otherwise: their codes would mean
+    different branches)."""
+    branches(case, cloud)
     files = sorted(folder(case, cloud).glob("events*.bin"))
-    if not files:
-        raise FileNotFoundError(f"no collision event log in "
-                                f"{folder(case, cloud)}")
     ev = np.concatenate([read_file(f) for f in files])
     order = np.lexsort((ev["id2"], ev["proc2"], ev["id1"], ev["proc1"],
                         ev["time"], ev["timeIndex"]))
