@@ -138,7 +138,7 @@ TEST(AgglomerateFragmentation, V4ConservationOnRandomParents)
                 // apart by the gap, not overlapping
                 const scalar gapDist =
                     mag(f.b.x - f.a.x) - 0.5*(f.a.d + f.b.d);
-                const scalar dp = c.frag.primaryDiameter(p);
+                const scalar dp = p.primaryDiameter(2200);
                 EXPECT_TRUE(near(gapDist, 1e-3*dp, 1e-6, 1e-20)) << i;
                 EXPECT_GT(gapDist, 0);
             }

@@ -221,16 +221,6 @@ Foam::vector Foam::agglomerateFragmentation::direction
 }
 
 
-Foam::scalar Foam::agglomerateFragmentation::primaryDiameter
-(
-    const hardSphereState& parent
-) const
-{
-    const scalar mp = parent.mass()/parent.nPrimary;
-    return std::cbrt(6*mp/(constant::mathematical::pi*rho0_));
-}
-
-
 Foam::agglomerateFragmentation::fragments
 Foam::agglomerateFragmentation::split
 (
@@ -251,7 +241,7 @@ Foam::agglomerateFragmentation::split
 
     // Sizes from the integer split (doc/breakup.md 3.1): m_i = N_i m_p
     const scalar M = parent.mass();
-    const scalar dp = primaryDiameter(parent);
+    const scalar dp = parent.primaryDiameter(rho0_);
     fragments f;
     hardSphereState* frag[2] = {&f.a, &f.b};
     const label Ni[2] = {N1, N - N1};
