@@ -123,3 +123,20 @@ def test_corrupt_records_refused(tmp_path, field, value, words):
     with pytest.raises(ValueError, match=re.escape(words)) as e:
         eventlog.read_file(f)
     assert str(f) in str(e.value) and "record 2" in str(e.value)
+
+
+def test_alpha_plot_takes_intervals_as_written(tmp_path):
+    """hardSphereReplay writes alpha and its interval with 10 digits: an
+    interval end may pass alpha by a round-off (alpha 0, low 1e-17); the
+    plot draws it (it stopped the channel's replay once) and refuses
+    nothing else."""
+    ens = (0.97, 0.8)
+    confs = [{"name": f"{m}{round(100 * e):03d}", "alpha": a,
+              "alphaLow": lo, "alphaHigh": hi}
+             for m, (a, lo, hi) in (("EAM", (0.0, 1e-17, 0.05)),
+                                    ("MAM", (0.1, 0.05, 0.2)))
+             for e in ens]
+    png = tmp_path / "alpha.png"
+    eventlog.plot_alpha_en({"configurations": confs}, png, "t", ens)
+    assert png.stat().st_size > 1000
+

@@ -391,6 +391,9 @@ def test_per_event_output(case_dir, foam_env):
     np.testing.assert_allclose(ev["un"], un, rtol=1e-8, atol=1e-15)
     conf = {r["name"]: r for r in res["configurations"]}
     assert ev["elastic.agglomerates"].sum() == 0
+    # no agglomeration: the Wilson interval starts at 0 exactly
+    assert conf["elastic"]["agglomerations"] == 0
+    assert conf["elastic"]["alphaLow"] == 0
     assert ev["run.agglomerates"].sum() == conf["run"]["agglomerations"]
     # the codes of the log and of the run's kernel name the same branches,
     # those of the run's model (EAM)

@@ -247,8 +247,11 @@ def plot_alpha_en(results, path, title, ens, models=("EAM", "MAM"),
         lo = np.array([r["alphaLow"] for r in rows], float)
         hi = np.array([r["alphaHigh"] for r in rows], float)
         x = np.array(ens) + (k - 0.5) * 0.006
-        ax.errorbar(x, a, yerr=[a - lo, hi - a], marker="os"[k % 2],
-                    capsize=4, label=m)
+        # the interval's ends as written (10 digits) may pass alpha by a
+        # round-off
+        err = [np.clip(a - lo, 0, None), np.clip(hi - a, 0, None)]
+        ax.errorbar(x, a, yerr=err, marker="os"[k % 2], capsize=4,
+                    label=m)
     if reference:
         ax.axhline(reference[0], color="0.4", ls="--", label=reference[1])
     ax.set_xlabel("restitution coefficient $e_n$")
