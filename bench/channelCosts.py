@@ -411,7 +411,7 @@ def main():
     print(table([old[k] for k in old]))
     print(f"\n(all figures: {jf})")
     if a.perf:
-        md = ROOT / "bench" / "results" / "channelProfile.md"
+        md = ROOT / "bench/results/channelProfile.md"
         md.write_text(profile_table([old[k] for k in old]) + "\n")
         print(f"(profile: {md})")
 

@@ -204,12 +204,12 @@ TEST(AgglomerateFragmentation, V5ErosionSequenceAndBinaryTree)
     (
         "CSM", "mode binary; direction extensional; gap 0; spin conserveL;"
     );
-    std::vector<label> todo({500});
+    std::vector<label> pending({500});
     label leaves = 0, splits = 0;
-    while (!todo.empty())
+    while (!pending.empty())
     {
-        const label N = todo.back();
-        todo.pop_back();
+        const label N = pending.back();
+        pending.pop_back();
         if (N == 1)
         {
             ++leaves;
@@ -217,8 +217,8 @@ TEST(AgglomerateFragmentation, V5ErosionSequenceAndBinaryTree)
         }
         const label N1 = b.frag.fragmentSize(N, rnd);
         EXPECT_EQ(N1, N/2);
-        todo.push_back(N1);
-        todo.push_back(N - N1);
+        pending.push_back(N1);
+        pending.push_back(N - N1);
         ++splits;
     }
     EXPECT_EQ(leaves, 500);

@@ -31,25 +31,15 @@ License
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::hardSphereStep::auditBefore(const CloudType& cloud)
+void Foam::hardSphereStep::globalSums
+(
+    const CloudType& cloud,
+    scalar& mass,
+    label& nPrimaries
+)
 {
-    mass0 = 0;
-    nPrimaries0 = 0;
-    for (const auto& p : cloud)
-    {
-        mass0 += p.nParticle()*p.mass();
-        nPrimaries0 += p.nPrimary();
-    }
-    reduce(mass0, sumOp<scalar>());
-    reduce(nPrimaries0, sumOp<label>());
-}
-
-
-template<class CloudType>
-void Foam::hardSphereStep::auditAfter(const CloudType& cloud) const
-{
-    scalar mass = 0;
-    label nPrimaries = 0;
+    mass = 0;
+    nPrimaries = 0;
     for (const auto& p : cloud)
     {
         mass += p.nParticle()*p.mass();
@@ -57,6 +47,22 @@ void Foam::hardSphereStep::auditAfter(const CloudType& cloud) const
     }
     reduce(mass, sumOp<scalar>());
     reduce(nPrimaries, sumOp<label>());
+}
+
+
+template<class CloudType>
+void Foam::hardSphereStep::auditBefore(const CloudType& cloud)
+{
+    globalSums(cloud, mass0, nPrimaries0);
+}
+
+
+template<class CloudType>
+void Foam::hardSphereStep::auditAfter(const CloudType& cloud) const
+{
+    scalar mass;
+    label nPrimaries;
+    globalSums(cloud, mass, nPrimaries);
     audit(mass, nPrimaries);
 }
 
