@@ -42,7 +42,7 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              dispersion="dispersionModel none;", coupled=False,
              turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2,
              frozen=True, tol=1e-8, source_scheme="semiImplicit 1",
-             patch_interaction="patchInteractionModel none;"):
+             patch_interaction="patchInteractionModel none;", breakup=""):
     """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
     hard_sphere: the body of the collision model's hardSphereCoeffs
@@ -50,7 +50,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
     for collisionModel none; the statistics function object is always on.
     rotation: rotationModel fluidTorque (else none); dispersion: the
     dispersionModel entry (plus its coefficients); turbulence: the body
-    of constant/turbulenceProperties."""
+    of constant/turbulenceProperties; breakup: the breakupModel entry and
+    its coefficients (default: none, by its absence)."""
     case = Path(case)
     steps = round(end_time / dt)
     write_interval = write_interval or steps
@@ -162,7 +163,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              "    stochasticCollisionModel none;\n"
              "    rotationModel "
              + ("fluidTorque" if rotation else "none") + ";\n"
-             + collision + "}\n"
+             + collision + ("    " + breakup + "\n" if breakup else "")
+             + "}\n"
              "cloudFunctions\n{\n    hardSphereStatistics"
              " { type hardSphereStatistics; }\n}\n"
              + cloud_extra)

@@ -202,7 +202,8 @@ void Foam::hardSphereCloudState::write
     const polyMesh& mesh,
     const word& cloudName,
     const label nParticles,
-    const label nPrimaries
+    const label nPrimaries,
+    const label nFragmentIds
 )
 {
     localIOdictionary record(newRecord(mesh, cloudName, true));
@@ -210,11 +211,15 @@ void Foam::hardSphereCloudState::write
     record.add("nParticles", nParticles);
     record.add("nParticlesTotal", returnReduce(nParticles, sumOp<label>()));
     record.add("nPrimariesTotal", returnReduce(nPrimaries, sumOp<label>()));
+    if (nFragmentIds >= 0)
+    {
+        record.add("nFragmentIds", nFragmentIds);
+    }
     writeRecord(record, mesh.time());
 }
 
 
-void Foam::hardSphereCloudState::check
+Foam::label Foam::hardSphereCloudState::check
 (
     const polyMesh& mesh,
     const word& cloudName,
@@ -272,7 +277,7 @@ void Foam::hardSphereCloudState::check
         }
         // (A rank without the fields or the naming record returns; the
         // one that has them stops the run)
-        return;
+        return 0;
     }
     if (!here)
     {
@@ -322,6 +327,10 @@ void Foam::hardSphereCloudState::check
             << " but " << recPrim << " were written ("
             << io.objectPath() << ")" << exit(FatalError);
     }
+
+    // Written by a run with break-up (absent: none handed out; the cloud
+    // checks the particles' fragment ids against it)
+    return record.getOrDefault<label>("nFragmentIds", 0);
 }
 
 

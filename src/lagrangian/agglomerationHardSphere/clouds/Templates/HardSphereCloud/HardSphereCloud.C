@@ -63,6 +63,32 @@ void Foam::HardSphereCloud<CloudType>::setModels()
             << " couplingScale = " << couplingScale_ << endl;
     }
 
+    // The subModels dictionary: the entries of v1912's kinematic cloud and
+    // this cloud's own, and the models' <model>Coeffs; a misspelt one
+    // (say breakUpModel, which would leave break-up off) stops
+    const dictionary& smd = this->subModelProperties();
+    const wordList subModelKeys
+    ({
+        "particleForces", "injectionModels", "dispersionModel",
+        "patchInteractionModel", "stochasticCollisionModel",
+        "surfaceFilmModel", "collisionModel", "rotationModel",
+        "breakupModel"
+    });
+    for (const entry& e : smd)
+    {
+        const word& key = e.keyword();
+        const bool coeffs =
+            key.size() > 6 && key.compare(key.size() - 6, 6, "Coeffs") == 0;
+        if (!coeffs && !subModelKeys.found(key))
+        {
+            FatalIOErrorInFunction(smd)
+                << "Unknown entry '" << key << "' in dictionary "
+                << smd.name() << nl << "    Valid entries: "
+                << flatOutput(subModelKeys) << " and <model>Coeffs"
+                << exit(FatalIOError);
+        }
+    }
+
     rotationModel_.reset
     (
         ParticleRotationModel<hardSphereCloudType>::New
@@ -84,6 +110,15 @@ void Foam::HardSphereCloud<CloudType>::setModels()
         ).ptr()
     );
 
+    // After the collision model, whose material and structure it uses
+    breakupModel_.reset
+    (
+        AgglomerateBreakupModel<hardSphereCloudType>::New
+        (
+            this->subModelProperties(),
+            *this
+        ).ptr()
+    );
 }
 
 
@@ -116,6 +151,7 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
     keyedDispersion_(nullptr),
     collisionModel_(nullptr),
     rotationModel_(nullptr),
+    breakupModel_(nullptr),
     couplingScale_(1),
     cellOrder_(this->solution().dict(), cloudName),
     trackingTime_(0),
@@ -135,12 +171,13 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
         if (readFields)
         {
             parcelType::readFields(*this);
-            hardSphereCloudState::check
+            const label nFragmentIds = hardSphereCloudState::check
             (
                 this->mesh(), this->name(), this->size(), nPrimaries(),
                 parcelType::ownFieldNames()
             );
             this->deleteLostParticles();
+            breakupModel_->restartIds(nFragmentIds);
         }
         collisionModel_->checkParticles();
     }
@@ -173,7 +210,10 @@ bool Foam::HardSphereCloud<CloudType>::writeObject
     const bool ok = CloudType::writeObject(fmt, ver, cmp, valid);
     hardSphereCloudState::write
     (
-        this->mesh(), this->name(), this->size(), nPrimaries()
+        this->mesh(), this->name(), this->size(), nPrimaries(),
+        breakupModel_.valid() && breakupModel_->active()
+      ? breakupModel_->nFragmentIds()
+      : -1
     );
     return ok;
 }
@@ -268,8 +308,11 @@ void Foam::HardSphereCloud<CloudType>::motion
             }
         }
 
+        // Break-up of the agglomerates that neither collided nor formed
+        breakupModel_->breakup(td);
+
         // Tracked moves: agglomerates to the centre of mass, particles out
-        // of walls, separated partners
+        // of walls, separated partners, fragments
         bool relocate = false;
         for (const parcelType& p : *this)
         {

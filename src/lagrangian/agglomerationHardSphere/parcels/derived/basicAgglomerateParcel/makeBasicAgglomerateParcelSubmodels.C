@@ -48,6 +48,8 @@ License
 #include "HardSphereStatistics.H"
 #include "NoParticleRotation.H"
 #include "FluidTorqueRotation.H"
+#include "NoAgglomerateBreakup.H"
+#include "StressThresholdBreakup.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -89,6 +91,19 @@ makeCollisionResolverType(GhostCollisionResolver, basicAgglomerateParcel);
 makeParticleRotationModel(basicAgglomeratingCloud);
 makeParticleRotationModelType(NoParticleRotation, basicAgglomeratingCloud);
 makeParticleRotationModelType(FluidTorqueRotation, basicAgglomeratingCloud);
+
+// The agglomerate break-up
+makeAgglomerateBreakupModel(basicAgglomeratingCloud);
+makeAgglomerateBreakupModelType
+(
+    NoAgglomerateBreakup,
+    basicAgglomeratingCloud
+);
+makeAgglomerateBreakupModelType
+(
+    StressThresholdBreakup,
+    basicAgglomeratingCloud
+);
 
 
 // ************************************************************************* //

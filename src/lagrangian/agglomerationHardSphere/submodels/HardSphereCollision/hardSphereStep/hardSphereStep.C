@@ -81,7 +81,9 @@ Foam::hardSphereStep::hardSphereStep(const objectRegistry& cloud)
     eventAgglomerates(),
     mass0(-1),
     nPrimaries0(-1),
-    model_(nullptr)
+    model_(nullptr),
+    extraCounterNames_(),
+    extraSumNames_()
 {}
 
 
@@ -90,8 +92,28 @@ Foam::hardSphereStep::hardSphereStep(const objectRegistry& cloud)
 void Foam::hardSphereStep::setModel(const agglomerationModel& model)
 {
     model_ = &model;
-    counts.setSize(N_COUNTERS + model.counterNames().size());
-    sums.setSize(1 + model.sumNames().size());
+    resize();
+}
+
+
+Foam::labelPair Foam::hardSphereStep::addColumns
+(
+    const wordList& counterNames,
+    const wordList& sumNames
+)
+{
+    const labelPair offsets(counts.size(), sums.size());
+    extraCounterNames_.append(counterNames);
+    extraSumNames_.append(sumNames);
+    resize();
+    return offsets;
+}
+
+
+void Foam::hardSphereStep::resize()
+{
+    counts.setSize(counterNames().size());
+    sums.setSize(sumNames().size());
     reset();
 }
 
@@ -103,6 +125,7 @@ Foam::wordList Foam::hardSphereStep::counterNames() const
     {
         names.append(model_->counterNames());
     }
+    names.append(extraCounterNames_);
     return names;
 }
 
@@ -114,6 +137,7 @@ Foam::wordList Foam::hardSphereStep::sumNames() const
     {
         names.append(model_->sumNames());
     }
+    names.append(extraSumNames_);
     return names;
 }
 

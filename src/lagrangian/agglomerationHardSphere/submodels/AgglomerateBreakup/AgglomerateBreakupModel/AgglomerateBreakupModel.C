@@ -1,0 +1,87 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
+#include "AgglomerateBreakupModel.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::AgglomerateBreakupModel<CloudType>::AgglomerateBreakupModel
+(
+    CloudType& owner
+)
+:
+    CloudSubModelBase<CloudType>(owner),
+    ids_()
+{}
+
+
+template<class CloudType>
+Foam::AgglomerateBreakupModel<CloudType>::AgglomerateBreakupModel
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    CloudSubModelBase<CloudType>(owner, dict, typeName, type),
+    ids_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::AgglomerateBreakupModel<CloudType>::restartIds(const label next)
+{
+    label top = -1;
+    for (const parcelType& p : this->owner())
+    {
+        if (p.origProc() == fragmentIds::origProc)
+        {
+            top = max(top, p.origId());
+        }
+    }
+    reduce(top, maxOp<label>());
+
+    if (top >= next)
+    {
+        FatalErrorInFunction
+            << "Cloud " << this->owner().name() << ": a particle read holds"
+            << " the fragment id " << top << ", but the restart record"
+            << " (hardSphereCloudState) says that only " << next
+            << " fragment ids were handed out: the particles and the"
+            << " record disagree" << exit(FatalError);
+    }
+    ids_ = fragmentIds(next);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+#include "AgglomerateBreakupModelNew.C"
+
+// ************************************************************************* //

@@ -1,0 +1,305 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+\*---------------------------------------------------------------------------*/
+
+#include "StressThresholdBreakup.H"
+#include "hardSphereCollisionKernel.H"
+#include "hardSphereInput.H"
+#include "keyedRandom.H"
+#include "randomStreams.H"
+#include "fvcGrad.H"
+#include "hardSphereStep.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::hardSphereCollisionKernel&
+Foam::StressThresholdBreakup<CloudType>::kernelOf(const CloudType& owner)
+{
+    const hardSphereCollisionKernel* k = owner.collision().kernel();
+    if (!k || !k->hasStructure() || !k->agglomeration().cohesive())
+    {
+        FatalIOErrorInFunction(owner.subModelProperties())
+            << "breakupModel stressThreshold in cloud " << owner.name()
+            << " needs collisionModel hardSphere with an agglomeration"
+            << " model (EAM, EAMAlletto2014 or MAM) and a structureModel:"
+            << " the bond force and the fragments' sizes are theirs"
+            << exit(FatalIOError);
+    }
+    return *k;
+}
+
+
+template<class CloudType>
+const Foam::dictionary&
+Foam::StressThresholdBreakup<CloudType>::checkedCoeffs(const dictionary& dict)
+{
+    hardSphereInput::checkKeys
+    (
+        dict, {"randomSeed", "strength", "stresses", "fragmentation"}
+    );
+    return dict;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::StressThresholdBreakup<CloudType>::dragForce
+(
+    parcelType& p,
+    trackingData& td
+) const
+{
+    // The velocity seen: the carrier velocity as in the tracking plus the
+    // SGS velocity of the dispersion model
+    td.Uc() += p.UTurb();
+
+    const scalar dt = this->owner().db().time().deltaTValue();
+    const forceSuSp F =
+        this->owner().forces().calcCoupled
+        (
+            p, td, dt, p.mass(), p.Re(td), td.muc()
+        );
+
+    // The part linear in the slip: the drag laws' implicit coefficient
+    return F.Sp()*(td.Uc() - p.U());
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::StressThresholdBreakup<CloudType>::split
+(
+    parcelType& p,
+    const label newId,
+    const breakupCriterion::verdict& v,
+    const symmTensor& S
+)
+{
+    const hardSphereState parent
+    (
+        p.stage().knownPosition(), p.U(), p.omega(), p.d(), p.rho(),
+        p.nPrimary()
+    );
+
+    keyedRandom rnd
+    (
+        randomSeed_, randomStreams::breakup, p.origProc(), p.origId(),
+        this->owner().db().time().timeIndex(), 0
+    );
+    const label N1 = fragmentation_.fragmentSize(parent.nPrimary, rnd);
+    const vector e =
+        fragmentation_.direction
+        (
+            S, parent.omega, v.mechanism == breakupStresses::ROTATION, rnd
+        );
+    const agglomerateFragmentation::fragments f =
+        fragmentation_.split(parent, N1, e);
+
+    // Fragment a: a new parcel, a copy of the parent in its cell
+    parcelType* q = static_cast<parcelType*>(p.clone().ptr());
+    q->origProc() = fragmentIds::origProc;
+    q->origId() = newId;
+    q->lastPartnerProc() = -1;
+    q->lastPartnerId() = -1;
+
+    const auto set = [](parcelType& r, const hardSphereState& s)
+    {
+        r.U() = s.U;
+        r.omega() = s.omega;
+        r.d() = s.d;
+        r.rho() = s.rho;
+        r.nPrimary() = s.nPrimary;
+        r.stage().forgetPosition();
+        r.stage().relocateTo(s.x);
+        r.stage().markFormed();
+    };
+    set(*q, f.a);
+    set(p, f.b);
+
+    this->owner().addParticle(q);
+
+    return f.dKE;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    AgglomerateBreakupModel<CloudType>(dict, owner, typeName),
+    kernel_(kernelOf(owner)),
+    criterion_
+    (
+        checkedCoeffs(this->coeffDict()),
+        kernel_.material(),
+        kernel_.structure()
+    ),
+    fragmentation_
+    (
+        this->coeffDict().subDict("fragmentation"),
+        kernel_.structure(),
+        kernel_.material().rho0()
+    ),
+    randomSeed_
+    (
+        this->coeffDict().template getOrDefault<label>("randomSeed", 0)
+    ),
+    columns_(-1, -1)
+{
+    // This model's columns of the statistics
+    wordList counters(breakupStresses::mechanismTypeNames.size());
+    forAll(counters, m)
+    {
+        word name(breakupStresses::mechanismTypeNames.names()[m]);
+        name[0] = toupper(name[0]);
+        counters[m] = "nBreakup" + name;
+    }
+    columns_ =
+        owner.template lookupObjectRef<hardSphereStep>
+        (
+            hardSphereStep::typeName
+        ).addColumns(counters, {"breakupEnergyChange"});
+
+    Info<< "    agglomerate break-up: stressThreshold (doc/breakup.md)"
+        << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
+{
+    CloudType& cloud = this->owner();
+    const fvMesh& mesh = cloud.mesh();
+
+    // The carrier's fields: cell values [rec, doc/breakup.md 1.1]
+    const tmp<volTensorField> tgradU(fvc::grad(cloud.U()));
+    const volTensorField& gradU = tgradU();
+    const volScalarField* nutPtr =
+        mesh.template findObject<volScalarField>("nut");
+    const volScalarField& rho = cloud.rho();
+    const volScalarField& mu = cloud.mu();
+
+    // The agglomerates that break, checked once each: those that ended the
+    // step where they were tracked to (no event, no relocation)
+    DynamicList<parcelType*> parents;
+    DynamicList<breakupCriterion::verdict> verdicts;
+    DynamicList<labelPair> ids;
+    for (parcelType& p : cloud)
+    {
+        const hardSphereParcelStage& st = p.stage();
+        if
+        (
+            p.nPrimary() < 2
+         || !st.positionKnown()
+         || st.collided()
+         || st.formed()
+        )
+        {
+            continue;
+        }
+
+        const label celli = p.cell();
+        const symmTensor S(symm(gradU[celli]));
+        const scalar nu = mu[celli]/rho[celli];
+        const scalar nut = nutPtr ? (*nutPtr)[celli] : 0;
+
+        breakupStresses::load L;
+        L.epsilon = breakupCriterion::dissipation(nu, nut, S);
+        L.nu = nu;
+        L.rhoF = rho[celli];
+        L.omega = p.omega();
+        L.dragForce = Zero;
+        if (criterion_.stresses().on(breakupStresses::DRAG))
+        {
+            p.setCellValues(cloud, td);
+            L.dragForce = dragForce(p, td);
+        }
+
+        const hardSphereState s
+        (
+            p.stage().knownPosition(), p.U(), p.omega(), p.d(), p.rho(),
+            p.nPrimary()
+        );
+        const breakupCriterion::verdict v = criterion_.check(s, L);
+        if (v.breaks())
+        {
+            parents.append(&p);
+            verdicts.append(v);
+            ids.append(labelPair(p.origProc(), p.origId()));
+        }
+    }
+
+    // The new parcels' global ids (collective)
+    const labelList newIds(this->ids_.assign(ids));
+
+    labelList nEvents(3, Zero);
+    scalar dKE = 0;
+    forAll(parents, i)
+    {
+        parcelType& p = *parents[i];
+        const symmTensor S(symm(gradU[p.cell()]));
+        dKE += split(p, newIds[i], verdicts[i], S);
+        ++nEvents[verdicts[i].mechanism];
+    }
+
+    // The statistics' columns (local: the statistics sum over the ranks)
+    hardSphereStep& step =
+        cloud.template lookupObjectRef<hardSphereStep>
+        (
+            hardSphereStep::typeName
+        );
+    forAll(nEvents, m)
+    {
+        step.counts[columns_.first() + m] += nEvents[m];
+    }
+    step.sums[columns_.second()] += dKE;
+
+    Pstream::listCombineGather(nEvents, plusEqOp<label>());
+    Pstream::listCombineScatter(nEvents);
+    reduce(dKE, sumOp<scalar>());
+
+    Info<< "    Break-up: " << (nEvents[0] + nEvents[1] + nEvents[2])
+        << " events (";
+    forAll(nEvents, m)
+    {
+        Info<< (m ? ", " : "")
+            << breakupStresses::mechanismTypeNames
+               [
+                   breakupStresses::mechanismType(m)
+               ]
+            << ' ' << nEvents[m];
+    }
+    Info<< "), fragment ids handed out " << this->ids_.next()
+        << ", kinetic energy change " << dKE << " J" << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,343 @@
+"""The stressThreshold break-up model in the cloud (doc/breakup.md): the
+critical spin of verification case V1 for both structure models and
+N = 2, 3, 4, 10, 1000, the fragments' placement, spins and conservation,
+their global ids and the restart record, and a break-up at a processor
+boundary on 2 ranks against the serial run. The expectations are the
+spec's hand formulas (doc/breakup.md 1.4, 2, 3.2, 3.3), computed here
+independently of the C++ kernels."""
+
+import math
+import re
+
+import numpy as np
+import pytest
+
+from aggloTools import boxcase
+from aggloTools.cloud import cloud_positions, read_cloud, read_record
+from aggloTools.stats import read_stats
+from aggloTools.times import last_time
+
+H, DELTA0, RHO_P, DP = 6.3e-20, 2e-10, 2200.0, 12e-6   # boxcase.KERNEL
+GAP = 1e-3                                             # delta_gap/d_p
+CSM_F = {2: 0.26683, 3: 0.31574, 4: 0.42099, 9: 0.47106, 10: 0.41216}
+F_LARGE = 0.52
+
+BREAKUP = ("breakupModel stressThreshold;\n    stressThresholdCoeffs {"
+           " strength { rumpfPrefactor 1; coordination exactSmallRumpf; }"
+           " stresses { mechanisms (rotation);"
+           " rotationFactor 0.0625; }"
+           f" fragmentation {{ mode erosion; direction extensional;"
+           f" gap {GAP}; spin conserveL; }} }}")
+
+
+def packing(n):
+    return CSM_F.get(n, F_LARGE)
+
+
+def size_density(n, structure):
+    """Effective diameter and density (doc/breakup.md 1)."""
+    if n == 1:
+        return DP, RHO_P
+    if structure == "VSM":
+        return DP * n ** (1 / 3), RHO_P
+    f = packing(n)
+    return DP * (n / f) ** (1 / 3), f * RHO_P
+
+
+def tensile_strength(n, structure):
+    """Rumpf with c_R = 1 and k = pi/eps, the weakest plane for N <= 4
+    (doc/breakup.md 2); the bond force of two equal primaries
+    A d_p/(24 delta0^2); VSM takes the CSM porosity for the strength."""
+    F = H * DP / (24 * DELTA0 ** 2)
+    if n <= 4:
+        da = size_density(n, structure)[0]
+        return (n - 1) * F / (math.pi * da ** 2 / 4)
+    eps = 1 - packing(n)
+    return (1 - eps) * (math.pi / eps) * F / (math.pi * DP ** 2)
+
+
+def omega_crit(n, structure):
+    """sigma_r = rho_a omega^2 d_a^2/16 = sigma_T (doc/breakup.md 1.4)."""
+    da, rho = size_density(n, structure)
+    return 4 / da * math.sqrt(tensile_strength(n, structure) / rho)
+
+
+def state(case, t):
+    c = read_cloud(case, t)
+    x = cloud_positions(case, t)
+    m = c["rho"] * math.pi * c["d"] ** 3 / 6
+    return c, x, m
+
+
+def totals(c, x, m):
+    """Primaries, mass, momentum and angular momentum about the origin."""
+    L = (0.1 * m * c["d"] ** 2)[:, None] * c["omega"] \
+        + m[:, None] * np.cross(x, c["U"])
+    return (int(c["nPrimary"].sum()), m.sum(),
+            (m[:, None] * c["U"]).sum(0), L.sum(0))
+
+
+NS = (2, 3, 4, 10, 1000)
+
+
+def spinning_case(case, structure, factors=(0.99, 1.01)):
+    """One agglomerate per N and factor, spinning at factor*omega_crit
+    about z in fluid at rest; no forces, no fluid torque: one step."""
+    parts = []
+    for i, n in enumerate(NS):
+        for j, fac in enumerate(factors):
+            da, rho = size_density(n, structure)
+            parts.append(dict(x=(0.2e-3 + 0.4e-3 * i, 0.3e-3 + 0.4e-3 * j,
+                                 0.5e-3), U=(0, 0, 0), d=da, rho=rho,
+                              nPrimary=n,
+                              omega=(0, 0, fac * omega_crit(n, structure))))
+    hs = boxcase.KERNEL.replace("structureModel CSM;",
+                                f"structureModel {structure};") + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
+                     particles=parts, dt=1e-7, end_time=1e-7,
+                     hard_sphere=hs, breakup=BREAKUP)
+    return parts
+
+
+@pytest.mark.parametrize("structure", ["CSM", "VSM"])
+def test_critical_spin_erodes_one_primary(case_dir, foam_env, structure):
+    """V1: at 0.99 omega_crit nothing breaks, at 1.01 omega_crit one
+    primary leaves (erosion), for N = 2, 3, 4, 10, 1000. The two fragments
+    lie perpendicular to the spin, (d1 + d2)/2 + gap d_p apart about the
+    parent's centre of mass, and spin at omega' = I_a omega/J (angular
+    momentum kept); primaries, mass, momentum and angular momentum are
+    kept; the fragments' ids are (-2, 0..4) in the parents' id order and
+    the restart record counts 5."""
+    parts = spinning_case(case_dir, structure)
+    boxcase.run_case(case_dir)
+    t = last_time(case_dir)
+    c0, x0, m0 = state(case_dir, 0)
+    c1, x1, m1 = state(case_dir, t)
+
+    # Which broke: the 1.01 ones (odd ids), each into N - 1 and 1
+    parents = c1["origProcId"] >= 0
+    frag = ~parents
+    order = np.argsort(c1["origId"][parents])
+    n_after = c1["nPrimary"][parents][order]
+    n_before = np.array([p["nPrimary"] for p in parts])
+    broke = np.arange(len(parts)) % 2 == 1
+    assert np.array_equal(n_after, np.where(broke, n_before - 1, n_before))
+    assert np.array_equal(np.sort(c1["origId"][frag]), np.arange(5))
+    assert np.all(c1["origProcId"][frag] == -2)
+    assert np.all(c1["nPrimary"][frag] == 1)
+
+    # Fragment k belongs to the k-th breaking parent in id order
+    for k, pid in enumerate(np.flatnonzero(broke)):
+        n = parts[pid]["nPrimary"]
+        X = np.array(parts[pid]["x"])
+        w = parts[pid]["omega"][2]
+        ia = np.flatnonzero(frag & (c1["origId"] == k))[0]
+        ib = np.flatnonzero(parents & (c1["origId"] == pid))[0]
+        da, rho_a = size_density(n, structure)
+        d2, rho2 = size_density(n - 1, structure)
+        assert c1["d"][ia] == pytest.approx(DP, rel=1e-12)
+        assert c1["d"][ib] == pytest.approx(d2, rel=1e-12)
+        assert c1["rho"][ib] == pytest.approx(rho2, rel=1e-12)
+
+        # Placement (doc/breakup.md 3.2): perpendicular to the spin, the
+        # gap apart, the centre of mass kept
+        r = x1[ia] - x1[ib]
+        assert abs(r[2]) < 1e-12
+        assert np.linalg.norm(r) == pytest.approx(
+            (DP + d2) / 2 + GAP * DP, rel=1e-9)
+        ma, mb = m1[ia], m1[ib]
+        com = (ma * x1[ia] + mb * x1[ib]) / (ma + mb)
+        assert np.linalg.norm(com - X) < 1e-9 * da
+
+        # Spin (doc/breakup.md 3.3): omega' = I_a omega/J about z
+        M = ma + mb
+        Ia = 0.1 * M * da ** 2
+        J = sum(0.1 * m * d ** 2 + m * np.linalg.norm(xi - X) ** 2
+                for m, d, xi in ((ma, DP, x1[ia]), (mb, d2, x1[ib])))
+        for i in (ia, ib):
+            assert c1["omega"][i][2] == pytest.approx(Ia * w / J, rel=1e-9)
+
+    N0, M0, P0, L0 = totals(c0, x0, m0)
+    N1, M1, P1, L1 = totals(c1, x1, m1)
+    assert N1 == N0
+    assert M1 == pytest.approx(M0, rel=1e-12)
+    scale = sum(m * np.linalg.norm(p["omega"]) * p["d"] for m, p in
+                zip(m0, parts))
+    assert np.linalg.norm(P1 - P0) < 1e-12 * scale
+    assert np.linalg.norm(L1 - L0) < 1e-10 * np.linalg.norm(L0)
+
+    rec = read_record(case_dir, t, "kinematicCloud")
+    assert int(rec["nFragmentIds"]) == 5
+    stats = read_stats(case_dir)
+    assert [stats[f"nBreakup{m}"][-1] for m in
+            ("Turbulence", "Drag", "Rotation")] == [0, 0, 5]
+    log = (case_dir / "log.aggloPimpleFoam").read_text()
+    assert re.search(r"Break-up: 5 events \(turbulence 0, drag 0, "
+                     r"rotation 5\)", log), log[-2000:]
+
+
+# ------------------------------------------------- parallel and restart
+
+def boundary_case(case, decompose=(1, 1, 1), steps=2, write=None):
+    """Six N = 2 CSM agglomerates within 2 um of the plane x = 1 mm (the
+    processor boundary of a (2 1 1) decomposition), spinning at 1.2
+    omega_crit about z: each erodes in the first step, in a direction at
+    random in the x-y plane, so that some fragments cross the plane."""
+    n, (da, rho) = 2, size_density(2, "CSM")
+    w = 1.2 * omega_crit(2, "CSM")
+    parts = [dict(x=(1e-3 + (2e-6 if i % 2 else -2e-6),
+                     0.12e-3 + 0.15e-3 * i, 0.5e-3), U=(0, 0, 0), d=da,
+                  rho=rho, nPrimary=n, omega=(0, 0, w)) for i in range(6)]
+    hs = boxcase.KERNEL + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
+                     particles=parts, dt=1e-7, end_time=steps * 1e-7,
+                     write_interval=write, hard_sphere=hs, breakup=BREAKUP,
+                     decompose=decompose, write_format="binary")
+    return parts
+
+
+def by_id(c, x):
+    """Rows sorted by the global id (origProcId, origId)."""
+    order = np.lexsort((c["origId"], c["origProcId"]))
+    return {k: v[order] for k, v in c.items()}, x[order]
+
+
+def test_breakup_across_processors_equals_serial(case_dir, foam_env):
+    """V4 on 2 ranks: parents at the processor boundary break as in the
+    serial run, their fragments cross to the other rank and get the same
+    global ids; the final states (reconstructed) equal the serial ones."""
+    serial, par = case_dir / "serial", case_dir / "parallel"
+    boundary_case(serial)
+    boundary_case(par, decompose=(2, 1, 1))
+    boxcase.run_case(serial)
+    boxcase.run_case(par, parallel=2)
+
+    t = last_time(serial)
+    cs, xs = by_id(*state(serial, t)[:2])
+    cp, xp = by_id(*state(par, t)[:2])
+    assert np.sum(cs["origProcId"] == -2) == 6
+    for k in ("origProcId", "origId", "nPrimary"):
+        assert np.array_equal(cs[k], cp[k]), k
+    for k in ("d", "rho", "U", "omega"):
+        assert np.allclose(cs[k], cp[k], rtol=1e-12, atol=0), k
+    assert np.max(np.abs(xs - xp)) < 1e-12 * 2e-3
+
+    # Some fragment ended on the other rank than its parent (the parent
+    # of fragment k is particle k: all six break, ids in parent order)
+    rank = {}
+    for r in (0, 1):
+        c = read_cloud(par / f"processor{r}", t,
+                       names=["origProcId", "origId"])
+        for p, i in zip(c["origProcId"], c["origId"]):
+            rank[(int(p), int(i))] = r
+    crossed = [k for k in range(6) if rank[(-2, k)] != rank[(0, k)]]
+    assert crossed, rank
+
+
+def test_restart_continues_the_fragment_ids(case_dir, foam_env):
+    """An N = 1000 agglomerate spun at 1.5 omega_crit erodes once per
+    step: three steps in one run equal one step, a restart and two steps
+    (the fragment ids go on from the record's nFragmentIds), and a record
+    that counts fewer ids than the particles hold is refused."""
+    da, rho = size_density(1000, "CSM")
+    part = [dict(x=(1e-3, 0.5e-3, 0.5e-3), U=(0, 0, 0), d=da, rho=rho,
+                 nPrimary=1000, omega=(0, 0, 1.5 * omega_crit(1000, "CSM")))]
+    hs = boxcase.KERNEL + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    runs = {}
+    for name in ("whole", "restart", "corrupt"):
+        case = case_dir / name
+        boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
+                         particles=part, dt=1e-7, end_time=3e-7,
+                         write_interval=1, hard_sphere=hs, breakup=BREAKUP,
+                         write_format="binary")
+        runs[name] = case
+    boxcase.run_case(runs["whole"])
+    for name in ("restart", "corrupt"):
+        ctl = runs[name] / "system/controlDict"
+        ctl.write_text(ctl.read_text().replace("endTime 3e-07",
+                                               "endTime 1e-07"))
+        boxcase.run_case(runs[name])
+        ctl.write_text(ctl.read_text().replace("endTime 1e-07",
+                                               "endTime 3e-07"))
+    assert read_record(runs["restart"], "1e-07",
+                       "kinematicCloud")["nFragmentIds"] == 1
+
+    from aggloTools.runner import foam_bin, run
+    run([foam_bin("aggloPimpleFoam")], runs["restart"], "log.restart")
+    t = last_time(runs["whole"])
+    assert t == last_time(runs["restart"])
+    a = read_cloud(runs["whole"], t)
+    b = read_cloud(runs["restart"], t)
+    assert np.array_equal(np.sort(a["origId"][a["origProcId"] == -2]),
+                          np.arange(3))
+    for k in a:
+        assert np.array_equal(a[k], b[k]), k
+    assert read_record(runs["restart"], t, "kinematicCloud")[
+        "nFragmentIds"] == 3
+
+    rec = (runs["corrupt"] / "1e-07/uniform/lagrangian/kinematicCloud"
+           / "hardSphereCloudState")
+    rec.write_text(rec.read_text().replace("nFragmentIds    1;",
+                                           "nFragmentIds    0;"))
+    assert "nFragmentIds    0;" in rec.read_text()
+    res = run([foam_bin("aggloPimpleFoam")], runs["corrupt"], "log.corrupt",
+              check=False)
+    log = (runs["corrupt"] / "log.corrupt").read_text()
+    assert res.returncode != 0
+    assert "holds the fragment id 0" in log, log[-1500:]
+
+
+# ------------------------------------------------------------ V2 shear
+
+NU_F, RHO_F = 1.5e-5, 1.2
+GAMMA_CRIT = 1e4          # the bonds are weakened to give it
+L_C, N_C = (0.01, 0.01, 0.005), (5, 10, 2)
+
+
+@pytest.mark.parametrize("n", [2, 10])
+@pytest.mark.parametrize("factor", [0.99, 1.01])
+def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor):
+    """V2: an agglomerate in laminar simple shear (frozen Couette flow,
+    no slip) breaks by the turbulent stress C_v mu (eps/nu)^(1/2) =
+    C_v mu gamma (eps = nu gamma^2 in the viscous subrange, d_a < eta)
+    above gamma_crit = sigma_T/(C_v mu) and not below; the fragments lie
+    along the extensional direction, at 45 degrees in the x-y plane."""
+    # sigma_T is proportional to the Hamaker constant
+    h_weak = H * GAMMA_CRIT * NU_F * RHO_F / tensile_strength(n, "CSM")
+    gamma = factor * GAMMA_CRIT
+    da, rho = size_density(n, "CSM")
+    assert da < math.sqrt(NU_F / gamma)            # viscous subrange
+    y0 = 0.0052
+    x0 = (0.005, y0, 0.0025)
+    u0 = gamma * (y0 - L_C[1] / 2)
+    part = [dict(x=x0, U=(u0, 0, 0), d=da, rho=rho, nPrimary=n,
+                 omega=(0, 0, -gamma / 2))]
+    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
+                          "mechanisms (turbulence); Cv 1; Ci 1;")
+    assert "turbulence" in brk
+    uw = gamma * L_C[1] / 2
+    boxcase.box_case(case_dir, L=L_C, n=N_C,
+                     kinds=("cyclic", "wall", "cyclic"), particles=part,
+                     dt=1e-7, end_time=1e-7, nu=NU_F, rho_f=RHO_F,
+                     wall_velocity={"yMin": (-uw, 0, 0),
+                                    "yMax": (uw, 0, 0)},
+                     hard_sphere=hs, breakup=brk)
+    boxcase.write_internal_U(case_dir, L_C, N_C,
+                             lambda x, y, z: (gamma * (y - L_C[1] / 2), 0,
+                                              0))
+    boxcase.run_case(case_dir)
+    t = last_time(case_dir)
+    c, x, _ = state(case_dir, t)
+    if factor < 1:
+        assert len(c["d"]) == 1 and c["nPrimary"][0] == n
+        return
+    assert sorted(c["nPrimary"]) == [1, n - 1]
+    r = x[c["origProcId"] == -2][0] - x[c["origProcId"] == 0][0]
+    assert abs(r[2]) < 1e-9 * np.linalg.norm(r)
+    assert r[0] * r[1] > 0
+    assert abs(abs(r[0]) - abs(r[1])) < 1e-6 * np.linalg.norm(r)
