@@ -41,6 +41,9 @@ ROT = "rotationModel none;"
 COLL = "collisionModel hardSphere;"
 STATS = "hardSphereStatistics { type hardSphereStatistics; }"
 SOL = "cellValueSourceCorrection off;"
+BRK = ("strength { rumpfPrefactor 1.125; coordination exactSmallRumpf; }"
+       " stresses { mechanisms (rotation); rotationFactor 0.0625; }"
+       " fragmentation { mode erosion; }")
 
 # name: (old text, new text, word the message must name)
 CASES = {
@@ -143,6 +146,22 @@ CASES = {
                        "direction (0 1 0); nBins 0; }"), "nBins"),
     "statisticsDirection": (STATS, STATS.replace("}", "profiles true; "
                             "direction (0 0 0); nBins 4; }"), "direction"),
+    # break-up (absent: none): a misspelt key would leave it off
+    "breakupModelName": (ROT, ROT + " breakupModel stressTreshold;",
+                         "stressTreshold"),
+    "breakUpModelKey": (ROT, ROT + " breakUpModel stressThreshold;",
+                        "breakUpModel"),
+    "breakupCoeffsKey": (ROT, ROT + " breakupModel stressThreshold;"
+                         " stressThresholdCoeffs { " + BRK + " seed 1; }",
+                         "seed"),
+    "breakupStrengthMissing": (ROT, ROT + " breakupModel stressThreshold;"
+                               " stressThresholdCoeffs { "
+                               + BRK[BRK.index("stresses"):] + " }",
+                               "strength"),
+    "breakupMechanism": (ROT, ROT + " breakupModel stressThreshold;"
+                         " stressThresholdCoeffs { "
+                         + BRK.replace("(rotation)", "(centrifugal)")
+                         + " }", "centrifugal"),
     "couplingScaleZero": (SOL, SOL + " couplingScale 0;", "couplingScale"),
     "couplingScaleNegative": (SOL, SOL + " couplingScale -6;",
                               "couplingScale"),
@@ -205,6 +224,16 @@ def test_bad_cloud_input(case_dir, foam_env, name):
     old, new, word = {**CASES, **SUBMODEL_CASES}[name]
     edited_case(case_dir, old, new)
     assert_fatal_naming(run_case(case_dir, check=False), word)
+
+
+def test_breakup_needs_agglomeration(case_dir, foam_env):
+    """Break-up takes the bond force and the fragments' sizes from the
+    agglomeration and structure models: without agglomeration it stops."""
+    edited_case(case_dir, ROT, ROT + " breakupModel stressThreshold;"
+                " stressThresholdCoeffs { " + BRK + " }")
+    f = case_dir / "constant" / "kinematicCloudProperties"
+    f.write_text(f.read_text().replace(EAM, "agglomerationModel none;"))
+    assert_fatal_naming(run_case(case_dir, check=False), "breakupModel")
 
 
 # ------------------------------------------------------- hardSphereCollide
