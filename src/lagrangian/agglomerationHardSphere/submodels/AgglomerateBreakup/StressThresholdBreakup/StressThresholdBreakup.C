@@ -251,6 +251,20 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
         const breakupCriterion::verdict v = criterion_.check(s, L);
         if (v.breaks())
         {
+            if (debug)
+            {
+                Pout<< "    break-up of (" << p.origProc() << ' '
+                    << p.origId() << "): N " << p.nPrimary() << ", "
+                    << breakupStresses::mechanismTypeNames
+                       [
+                           breakupStresses::mechanismType(v.mechanism)
+                       ]
+                    << " stress/strength " << v.ratio << ", sigma_T "
+                    << v.sigmaT << " Pa, eps " << L.epsilon
+                    << " m2/s3, |F_D| " << mag(L.dragForce) << " N, |U| "
+                    << mag(p.U()) << " m/s, |omega| " << mag(p.omega())
+                    << " 1/s" << endl;
+            }
             parents.append(&p);
             verdicts.append(v);
             ids.append(labelPair(p.origProc(), p.origId()));

@@ -1,0 +1,94 @@
+"""tutorials/breakupShear: the criterion of breakupTheory against the hand
+values of doc/breakup.md 1.7, the gate's verdicts and exit status, and
+the `ci` preset run end to end in a copy of the tutorial (about 15 s)."""
+
+import json
+import math
+import shutil
+import subprocess
+
+import pytest
+
+from aggloTools.runner import project_dir, tutorial_module
+
+TUT = project_dir() / "tutorials" / "breakupShear"
+theory = tutorial_module("breakupShear", "breakupTheory")
+driver = tutorial_module("breakupShear", "breakupShear")
+
+
+def test_criterion_matches_the_spec_example():
+    """doc/breakup.md 1.7: d_p = 2 um, A = 6.5e-20 J, delta0 = 0.4 nm,
+    rho_p = 2500, air, N = 1000, CSM f = 0.52: F_vdW = 3.4e-8 N,
+    sigma_T = 9.2 kPa with c_R = 1, d_a = 24.9 um, omega_crit = 4.3e5
+    rad/s (the rotational stress rho_a omega^2 d_a^2/16 equal to it)."""
+    c = theory.Criterion(2e-6, 2500, 6.5e-20, 0.4e-9, 1.5e-5, 1.2, c_r=1)
+    assert c.bond_force() == pytest.approx(3.4e-8, rel=0.01)
+    assert c.strength(1000) == pytest.approx(9.2e3, rel=0.01)
+    assert c.diameter(1000) == pytest.approx(24.9e-6, rel=0.01)
+    w = 4 / c.diameter(1000) * math.sqrt(c.strength(1000) / c.density(1000))
+    assert w == pytest.approx(4.3e5, rel=0.01)
+    # the shear rate that spins it at omega_crit makes sigma_r = sigma_T
+    assert c.stresses(1000, 2 * w)[1] == pytest.approx(c.strength(1000),
+                                                       rel=1e-12)
+
+
+def test_final_size_is_the_largest_stable_size_below_n0():
+    """Erosion stops at the first stable size going down from N0; a stable
+    N0 stays; above the critical shear of a doublet nothing below it
+    holds two primaries unless a larger size is stable."""
+    c = driver.criterion()
+    for g in (3e5, 4e5, 5e5, 6e5):
+        n = c.final_size(200, g)
+        assert c.stable(n, g)
+        assert all(not c.stable(k, g) for k in range(n + 1, 201))
+    assert c.final_size(200, 1e5) == 200
+    g2 = c.critical_shear(2)
+    assert c.stable(2, 0.999 * g2) and not c.stable(2, 1.001 * g2)
+
+
+def test_gate_verdicts():
+    """FAIL: primaries lost, or erosion stopped above the prediction; n/r
+    while still eroding; PASS otherwise."""
+    assert driver.judge(14, 14, 320, 320, False) == "PASS"
+    assert driver.judge(9, 14, 320, 320, False) == "PASS"
+    assert driver.judge(15, 14, 320, 320, False) == "FAIL"
+    assert driver.judge(14, 14, 319, 320, False) == "FAIL"
+    assert driver.judge(20, 14, 320, 320, True).startswith("n/r")
+    assert driver.judge(20, 14, 319, 320, True) == "FAIL"
+
+
+def test_ci_preset_end_to_end(tmp_path, foam_env):
+    """The ci preset in a copy of the tutorial: exit status 0, every row
+    PASS (the largest agglomerate at or below the criterion's size once
+    erosion stopped, primaries conserved) and break-ups happened; then the
+    same report judged against a prediction one primary smaller fails
+    with exit status 1."""
+    tut = tmp_path / "breakupShear"
+    shutil.copytree(TUT, tut, ignore=shutil.ignore_patterns(
+        "runs", "results", "__pycache__"))
+    res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=600)
+    assert res.returncode == 0, res.stdout[-3000:]
+    rows = json.loads((tut / "runs/ci/report/summary.json").read_text())[
+        "rows"]
+    assert len(rows) == 4
+    for r in rows:
+        assert r["verdict"] == "PASS", r
+        assert r["primaries"] == 8 * 40
+        assert sum(r["breakups"].values()) > 0
+    shear = {r["gamma"]: r for r in rows if r["series"] == "shear"}
+    assert shear[5e5]["nPredicted"] == 14 and shear[5e5]["nMax"] <= 14
+    for png in ("sizes.png", "distribution.png", "criterion.png"):
+        assert (tut / "runs/ci/report" / png).stat().st_size > 10000
+
+    # The gate: a prediction one primary smaller must fail
+    patched = tut / "breakupTheory.py"
+    patched.write_text(patched.read_text().replace(
+        "        return n\n\n    def critical_shear",
+        "        return n - 1\n\n    def critical_shear"))
+    res = subprocess.run(["./Allrun", "-preset", "ci", "-post"], cwd=tut,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=600)
+    assert res.returncode == 1, res.stdout[-3000:]
+    assert "FAIL" in res.stdout
