@@ -341,3 +341,91 @@ def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor):
     assert abs(r[2]) < 1e-9 * np.linalg.norm(r)
     assert r[0] * r[1] > 0
     assert abs(abs(r[0]) - abs(r[1])) < 1e-6 * np.linalg.norm(r)
+
+
+# ------------------------------------------- V6 guard, V7 time step
+
+def test_fragments_never_re_stick_in_still_fluid(case_dir, foam_env):
+    """V6: a doublet split by its spin in still fluid (no forces) leaves
+    two primaries whose relative velocity is perpendicular to their
+    separation: they are made after the step's collisions and then move
+    apart as sqrt(s^2 + v^2 t^2), so no collision or agglomeration ever
+    follows."""
+    n = 2
+    da, rho = size_density(n, "CSM")
+    w = 1.01 * omega_crit(n, "CSM")
+    part = [dict(x=(1e-3, 0.5e-3, 0.5e-3), U=(0, 0, 0), d=da, rho=rho,
+                 nPrimary=n, omega=(0, 0, w))]
+    hs = boxcase.KERNEL + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    boxcase.box_case(case_dir, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
+                     particles=part, dt=1e-7, end_time=2e-6,
+                     write_interval=5, hard_sphere=hs, breakup=BREAKUP)
+    boxcase.run_case(case_dir)
+    stats = read_stats(case_dir)
+    assert stats["nBreakupRotation"][-1] == 1
+    assert stats["nCol"][-1] == 0 and stats["nAgg"][-1] == 0
+
+    s0 = DP + GAP * DP                     # the split's separation
+    ts = sorted((p.name for p in case_dir.iterdir()
+                 if p.name.startswith(("5e-", "1e-", "1.5e-", "2e-"))),
+                key=float)
+    assert len(ts) == 4
+    v = None
+    for t in ts:
+        c, x, _ = state(case_dir, t)
+        assert len(c["d"]) == 2 and list(c["nPrimary"]) == [1, 1]
+        if v is None:
+            v = np.linalg.norm(c["U"][0] - c["U"][1])
+            assert v > 0
+        # moving apart since the end of the first step (t - dt)
+        dt = float(t) - 1e-7
+        assert np.linalg.norm(x[0] - x[1]) == pytest.approx(
+            math.hypot(s0, v * dt), rel=1e-9)
+
+
+@pytest.mark.parametrize("refine", [10, 20, 40])
+def test_break_time_independent_of_the_time_step(case_dir, foam_env,
+                                                 refine):
+    """V7: an agglomerate released without spin in frozen Couette flow
+    spins up under the fluid torque (Stokes regime, Re_R < 32) as
+    omega(t) = gamma/2 (1 - exp(-t/tau)), tau = rho_a d_a^2/(60 mu),
+    exactly per step; bonds weakened so that omega_crit = 0.8 gamma/2 it
+    breaks at t_b = tau ln 5, in the first step that ends after t_b, for
+    dt = tau/10, tau/20 and tau/40."""
+    n, gamma = 10, 2e4
+    da, rho = size_density(n, "CSM")
+    mu = NU_F * RHO_F
+    tau = rho * da ** 2 / (60 * mu)
+    assert RHO_F * (gamma / 2) * da ** 2 / mu < 32      # Re_R, Stokes
+    w_crit = 0.8 * gamma / 2
+    # sigma_T (proportional to H) for this omega_crit
+    h_weak = H * rho * (w_crit * da / 4) ** 2 / tensile_strength(n, "CSM")
+    t_b = tau * math.log(5)
+    dt = tau / refine
+    k_b = math.floor(t_b / dt) + 1                      # the break step
+    y0 = 0.52e-3
+    part = [dict(x=(0.5e-3, y0, 0.25e-3),
+                 U=(gamma * (y0 - 0.5e-3), 0, 0), d=da, rho=rho,
+                 nPrimary=n, omega=(0, 0, 0))]
+    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    Lb, nb = (1e-3, 1e-3, 0.5e-3), (5, 10, 2)
+    uw = gamma * Lb[1] / 2
+    boxcase.box_case(case_dir, L=Lb, n=nb,
+                     kinds=("cyclic", "wall", "cyclic"), particles=part,
+                     dt=dt, end_time=(k_b + 3) * dt, nu=NU_F, rho_f=RHO_F,
+                     wall_velocity={"yMin": (-uw, 0, 0),
+                                    "yMax": (uw, 0, 0)},
+                     hard_sphere=hs, breakup=BREAKUP, rotation=True)
+    boxcase.write_internal_U(case_dir, Lb, nb,
+                             lambda x, y, z: (gamma * (y - Lb[1] / 2), 0,
+                                              0))
+    boxcase.run_case(case_dir)
+    log = (case_dir / "log.aggloPimpleFoam").read_text()
+    events = [int(m) for m in re.findall(r"Break-up: (\d+) events", log)]
+    assert len(events) == k_b + 3
+    assert events.index(1) + 1 == k_b, (events, k_b)
+    assert sum(events) == 1
+    # the break lies within one time step after t_b
+    assert 0 < k_b * dt - t_b <= dt
