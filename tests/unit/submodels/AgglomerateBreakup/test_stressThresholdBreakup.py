@@ -429,3 +429,74 @@ def test_break_time_independent_of_the_time_step(case_dir, foam_env,
     assert sum(events) == 1
     # the break lies within one time step after t_b
     assert 0 < k_b * dt - t_b <= dt
+
+
+# ---------------------------------------- V4: 10^4 parents, 2 ranks
+
+def many_parents(case, mode, decompose=(1, 1, 1)):
+    """10^4 CSM agglomerates of 2-20 primaries on a 100 um lattice
+    (22 x 22 x 21), spinning about random axes at 1.05-2 omega_crit,
+    moving at random velocities below 1 mm/s: every one breaks in the
+    first step (rotation), erosion or binary split, the parents at the
+    processor plane x = 1.1 mm included."""
+    rng = np.random.default_rng(7)
+    parts = []
+    for i in range(22):
+        for j in range(22):
+            for k in range(21):
+                n = int(rng.integers(2, 21))
+                da, rho = size_density(n, "CSM")
+                axis = rng.normal(size=3)
+                axis /= np.linalg.norm(axis)
+                w = rng.uniform(1.05, 2) * omega_crit(n, "CSM")
+                parts.append(dict(
+                    x=(50e-6 + 100e-6 * i, 50e-6 + 100e-6 * j,
+                       50e-6 + 100e-6 * k),
+                    U=tuple(rng.uniform(-1e-3, 1e-3, 3)), d=da, rho=rho,
+                    nPrimary=n, omega=tuple(w * axis)))
+    assert len(parts) == 10164
+    hs = boxcase.KERNEL + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    brk = BREAKUP.replace("mode erosion;", f"mode {mode};")
+    boxcase.box_case(case, L=(2.2e-3, 2.2e-3, 2.1e-3), n=(11, 11, 10),
+                     particles=parts, dt=1e-7, end_time=1e-7,
+                     hard_sphere=hs, breakup=brk, decompose=decompose,
+                     write_format="binary")
+    return parts
+
+
+@pytest.mark.parametrize("mode", ["erosion", "binary"])
+def test_conservation_on_ten_thousand_parents_and_two_ranks(case_dir,
+                                                            foam_env, mode):
+    """V4 in the cloud: 10^4 parents break in one step; the primaries are
+    kept exactly, the mass to 1e-12, the momentum and the angular
+    momentum about the origin to 1e-12 of the sum of their magnitudes
+    (the totals of random spins and velocities nearly cancel); on 2 ranks
+    the same fragments with the same ids and states."""
+    serial, par = case_dir / "serial", case_dir / "parallel"
+    many_parents(serial, mode)
+    many_parents(par, mode, decompose=(2, 1, 1))
+    boxcase.run_case(serial)
+    boxcase.run_case(par, parallel=2)
+    c0, x0, m0 = state(serial, 0)
+    t = last_time(serial)
+    c1, x1, m1 = state(serial, t)
+    assert len(m1) == 2 * len(m0)               # every parent broke
+    N0, M0, P0, L0 = totals(c0, x0, m0)
+    N1, M1, P1, L1 = totals(c1, x1, m1)
+    assert N1 == N0
+    assert M1 == pytest.approx(M0, rel=1e-12)
+    p_scale = np.sum(m0 * np.linalg.norm(c0["U"], axis=1)) + np.sum(
+        m1 * np.linalg.norm(c1["U"], axis=1))
+    assert np.linalg.norm(P1 - P0) < 1e-12 * p_scale
+    spin = (0.1 * m0 * c0["d"] ** 2) * np.linalg.norm(c0["omega"], axis=1)
+    orbit = m0 * np.linalg.norm(np.cross(x0, c0["U"]), axis=1)
+    assert np.linalg.norm(L1 - L0) < 1e-12 * np.sum(spin + orbit)
+
+    cs, xs = by_id(c1, x1)
+    cp, xp = by_id(*state(par, t)[:2])
+    for k in ("origProcId", "origId", "nPrimary"):
+        assert np.array_equal(cs[k], cp[k]), k
+    for k in ("d", "rho", "U", "omega"):
+        assert np.allclose(cs[k], cp[k], rtol=1e-12, atol=0), k
+    assert np.max(np.abs(xs - xp)) < 1e-12 * 2.2e-3
