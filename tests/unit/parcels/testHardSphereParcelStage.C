@@ -50,6 +50,9 @@ TEST(hardSphereParcelStage, flagsAndPositions)
     EXPECT_EQ(s.relocationTarget(), y);
     s.relocated();
     EXPECT_FALSE(s.relocating());
+    // the wall contacts of the parcels made in the step read the target
+    // after their relocation
+    EXPECT_EQ(s.relocationTarget(), y);
     EXPECT_TRUE(s.collided() && s.formed() && s.removed());
 
     const point z(7, 8, 9);
