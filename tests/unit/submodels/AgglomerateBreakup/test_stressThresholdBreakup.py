@@ -500,3 +500,63 @@ def test_conservation_on_ten_thousand_parents_and_two_ranks(case_dir,
     for k in ("d", "rho", "U", "omega"):
         assert np.allclose(cs[k], cp[k], rtol=1e-12, atol=0), k
     assert np.max(np.abs(xs - xp)) < 1e-12 * 2.2e-3
+
+
+# ------------------------------------------------ stochastic rate (1.6)
+
+@pytest.mark.parametrize("scale", ["kolmogorov", "eddy"])
+def test_stochastic_rate_breaks_the_expected_share(case_dir, foam_env,
+                                                   scale):
+    """doc/breakup.md 1.6: 2016 doublets in laminar shear at twice their
+    critical shear rate (turbulent stress); with the stochastic rate the
+    share that breaks in the first step is 1 - exp(-dt/t_e), t_e = (nu/
+    eps)^(1/2) = 1/gamma (kolmogorov) or d_a^(2/3) eps^(-1/3) (eddy),
+    within 4 binomial standard deviations; the others are deferred. The
+    deterministic rate breaks them all (test_critical_shear_rate)."""
+    n = 2
+    gamma = 2 * GAMMA_CRIT
+    h_weak = H * GAMMA_CRIT * NU_F * RHO_F / tensile_strength(n, "CSM")
+    da, rho = size_density(n, "CSM")
+    eps = NU_F * gamma ** 2
+    t_e = math.sqrt(NU_F / eps) if scale == "kolmogorov" else \
+        (da ** 2 / eps) ** (1 / 3)
+    dt = 0.5 * math.sqrt(NU_F / eps)        # the same step for both
+    share = 1 - math.exp(-dt / t_e)
+    assert 0.35 < share < 0.55
+    parts = []
+    for i in range(16):
+        for j in range(14):
+            for k in range(9):
+                y = 0.11e-3 + 60e-6 * j + 0.5 * (L_C[1] - 1e-3)
+                parts.append(dict(
+                    x=(0.3e-3 + 0.6e-3 * i, y, 0.25e-3 + 0.5e-3 * k),
+                    U=(gamma * (y - L_C[1] / 2), 0, 0), d=da, rho=rho,
+                    nPrimary=n, omega=(0, 0, -gamma / 2)))
+    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    brk = BREAKUP.replace(
+        "mechanisms (rotation); rotationFactor 0.0625;",
+        "mechanisms (turbulence); Cv 1; Ci 1;").replace(
+        "spin conserveL; }",
+        f"spin conserveL; }} rate {{ model stochastic; timeScale {scale}; }}")
+    assert "stochastic" in brk and "turbulence" in brk
+    uw = gamma * L_C[1] / 2
+    boxcase.box_case(case_dir, L=L_C, n=N_C,
+                     kinds=("cyclic", "wall", "cyclic"), particles=parts,
+                     dt=dt, end_time=dt, nu=NU_F, rho_f=RHO_F,
+                     wall_velocity={"yMin": (-uw, 0, 0),
+                                    "yMax": (uw, 0, 0)},
+                     hard_sphere=hs, breakup=brk, write_format="binary")
+    boxcase.write_internal_U(case_dir, L_C, N_C,
+                             lambda x, y, z: (gamma * (y - L_C[1] / 2), 0,
+                                              0))
+    boxcase.run_case(case_dir)
+    m = re.search(r"Break-up: (\d+) events \(turbulence (\d+), drag 0, "
+                  r"rotation 0\), deferred by the rate (\d+)",
+                  (case_dir / "log.aggloPimpleFoam").read_text())
+    assert m, "no break-up line"
+    broke, deferred = int(m.group(1)), int(m.group(3))
+    N = len(parts)
+    assert broke + deferred == N
+    sd = math.sqrt(N * share * (1 - share))
+    assert abs(broke - N * share) < 4 * sd, (broke, N * share, sd)

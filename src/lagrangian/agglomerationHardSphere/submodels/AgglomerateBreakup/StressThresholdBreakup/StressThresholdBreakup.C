@@ -58,7 +58,8 @@ Foam::StressThresholdBreakup<CloudType>::checkedCoeffs(const dictionary& dict)
 {
     hardSphereInput::checkKeys
     (
-        dict, {"randomSeed", "strength", "stresses", "fragmentation"}
+        dict,
+        {"randomSeed", "strength", "stresses", "fragmentation", "rate"}
     );
     return dict;
 }
@@ -166,6 +167,12 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
         kernel_.structure(),
         kernel_.material().rho0()
     ),
+    rate_
+    (
+        this->coeffDict().found("rate")
+      ? breakupRate(this->coeffDict().subDict("rate"))
+      : breakupRate()
+    ),
     randomSeed_
     (
         this->coeffDict().template getOrDefault<label>("randomSeed", 0)
@@ -186,8 +193,9 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
             hardSphereStep::typeName
         ).addColumns(counters, {"breakupEnergyChange"});
 
-    Info<< "    agglomerate break-up: stressThreshold (doc/breakup.md)"
-        << endl;
+    Info<< "    agglomerate break-up: stressThreshold (doc/breakup.md), ";
+    rate_.write(Info);
+    Info<< endl;
 }
 
 
@@ -212,6 +220,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     DynamicList<parcelType*> parents;
     DynamicList<breakupCriterion::verdict> verdicts;
     DynamicList<labelPair> ids;
+    label nDeferred = 0;
     for (parcelType& p : cloud)
     {
         const hardSphereParcelStage& st = p.stage();
@@ -249,6 +258,32 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             p.nPrimary()
         );
         const breakupCriterion::verdict v = criterion_.check(s, L);
+        if
+        (
+            v.breaks()
+         && v.mechanism == breakupStresses::TURBULENCE
+         && rate_.stochastic()
+        )
+        {
+            keyedRandom rnd
+            (
+                randomSeed_, randomStreams::breakupRate, p.origProc(),
+                p.origId(), cloud.db().time().timeIndex(), 0
+            );
+            if
+            (
+                rnd.sample01()
+             >= rate_.probability
+                (
+                    cloud.db().time().deltaTValue(), L.epsilon, L.nu,
+                    p.d()
+                )
+            )
+            {
+                ++nDeferred;
+                continue;
+            }
+        }
         if (v.breaks())
         {
             if (debug)
@@ -299,6 +334,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     Pstream::listCombineGather(nEvents, plusEqOp<label>());
     Pstream::listCombineScatter(nEvents);
     reduce(dKE, sumOp<scalar>());
+    reduce(nDeferred, sumOp<label>());
 
     Info<< "    Break-up: " << (nEvents[0] + nEvents[1] + nEvents[2])
         << " events (";
@@ -311,7 +347,12 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
                ]
             << ' ' << nEvents[m];
     }
-    Info<< "), fragment ids handed out " << this->ids_.next()
+    Info<< ")";
+    if (rate_.stochastic())
+    {
+        Info<< ", deferred by the rate " << nDeferred;
+    }
+    Info<< ", fragment ids handed out " << this->ids_.next()
         << ", kinetic energy change " << dKE << " J" << endl;
 }
 
