@@ -134,6 +134,29 @@ void Foam::HardSphereCloud<CloudType>::sortByCell()
 }
 
 
+template<class CloudType>
+void Foam::HardSphereCloud<CloudType>::debugSums(const char* phase) const
+{
+    if (!HardSphereCollisionModel<hardSphereCloudType>::debug)
+    {
+        return;
+    }
+    vector momentum(Zero);
+    vector position(Zero);
+    for (const parcelType& p : *this)
+    {
+        momentum += p.mass()*p.U();
+        position += p.position();
+    }
+    reduce(momentum, sumOp<vector>());
+    reduce(position, sumOp<vector>());
+    const vector source(gSum(this->UTrans().field()));
+    Info<< setprecision(17) << "    Sums after " << phase << ": momentum "
+        << momentum << ", positions " << position << ", UTrans " << source
+        << setprecision(IOstream::defaultPrecision()) << endl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -293,11 +316,13 @@ void Foam::HardSphereCloud<CloudType>::motion
     CloudType::motion(cloud, td);
 
     trackingTime_ = timer.timeIncrement();
+    debugSums("tracking");
 
     // Stage 2: collisions, agglomeration, walls
     if (collisionModel_->active())
     {
         collisionModel_->collide();
+        debugSums("collisions");
 
         // Mark-then-delete
         for (parcelType& p : *this)
@@ -337,6 +362,7 @@ void Foam::HardSphereCloud<CloudType>::motion
         }
 
         this->updateCellOccupancy();
+        debugSums("relocations");
 
         // The mass audit of the stage, in every run and build
         collisionModel_->step().auditAfter(*this);
