@@ -560,3 +560,54 @@ def test_stochastic_rate_breaks_the_expected_share(case_dir, foam_env,
     assert broke + deferred == N
     sd = math.sqrt(N * share * (1 - share))
     assert abs(broke - N * share) < 4 * sd, (broke, N * share, sd)
+
+
+# ------------------------------------------------------------ V3 drag
+
+def sn_drag_stress(u, da):
+    """C_d |F_D|/(pi d_a^2) with C_d = 1 and the Schiller-Naumann drag
+    3 pi mu d_a u (1 + 0.15 Re^0.687) (doc/breakup.md 1.3)."""
+    mu = NU_F * RHO_F
+    re = RHO_F * u * da / mu
+    return 3 * mu * u * (1 + 0.15 * re ** 0.687) / da
+
+
+@pytest.mark.parametrize("ratio", [0.99, 1.01])
+def test_critical_drag_slip(case_dir, foam_env, ratio):
+    """V3: an agglomerate released into still air with the slip U0 at
+    which the code's drag law (Schiller-Naumann) gives the drag stress
+    ratio x sigma_T breaks by drag at 1.01 and not at 0.99 (one step of
+    1e-5 of its response time, so the slip is U0 to 1e-5). The bonds are
+    weakened so that sigma_T is the drag stress at 1 m/s."""
+    n = 10
+    da, rho = size_density(n, "CSM")
+    sigma_t = sn_drag_stress(1.0, da)
+    h_weak = H * sigma_t / tensile_strength(n, "CSM")
+    lo, hi = 0.1, 10.0                      # the slip of ratio x sigma_T
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if sn_drag_stress(mid, da) < ratio * sigma_t \
+            else (lo, mid)
+    u0 = 0.5 * (lo + hi)
+    mu = NU_F * RHO_F
+    tau = rho * da ** 2 / (18 * mu)
+    part = [dict(x=(1e-3, 0.5e-3, 0.5e-3), U=(u0, 0, 0), d=da, rho=rho,
+                 nPrimary=n)]
+    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
+        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
+                          "mechanisms (drag); Cd 1;")
+    assert "(drag)" in brk
+    dt = 1e-5 * tau
+    boxcase.box_case(case_dir, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
+                     particles=part, dt=dt, end_time=dt, nu=NU_F,
+                     rho_f=RHO_F, forces="{ SchillerNaumannDrag; }",
+                     hard_sphere=hs, breakup=brk)
+    boxcase.run_case(case_dir)
+    log = (case_dir / "log.aggloPimpleFoam").read_text()
+    m = re.search(r"Break-up: (\d+) events \(turbulence 0, drag (\d+), "
+                  r"rotation 0\)", log)
+    assert m, log[-2000:]
+    assert int(m.group(2)) == (1 if ratio > 1 else 0)
+    c = read_cloud(case_dir, last_time(case_dir))
+    assert sorted(c["nPrimary"]) == ([1, n - 1] if ratio > 1 else [n])
