@@ -94,15 +94,10 @@ Foam::scalar Foam::StressThresholdBreakup<CloudType>::split
     parcelType& p,
     const label newId,
     const breakupCriterion::verdict& v,
+    const hardSphereState& parent,
     const symmTensor& S
 )
 {
-    const hardSphereState parent
-    (
-        p.stage().knownPosition(), p.U(), p.omega(), p.d(), p.rho(),
-        p.nPrimary()
-    );
-
     keyedRandom rnd
     (
         randomSeed_, randomStreams::breakup, p.origProc(), p.origId(),
@@ -207,9 +202,24 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     CloudType& cloud = this->owner();
     const fvMesh& mesh = cloud.mesh();
 
+    // The velocity gradient only if an agglomerate is there on some rank
+    // (the gradient is collective across processor patches)
+    bool agglomerates = false;
+    for (const parcelType& p : cloud)
+    {
+        if (p.nPrimary() > 1)
+        {
+            agglomerates = true;
+            break;
+        }
+    }
+    reduce(agglomerates, orOp<bool>());
+
     // The carrier's fields: cell values [rec, doc/breakup.md 1.1]
-    const tmp<volTensorField> tgradU(fvc::grad(cloud.U()));
-    const volTensorField& gradU = tgradU();
+    const tmp<volTensorField> tgradU
+    (
+        agglomerates ? fvc::grad(cloud.U()) : tmp<volTensorField>()
+    );
     const volScalarField* nutPtr =
         mesh.template findObject<volScalarField>("nut");
     const volScalarField& rho = cloud.rho();
@@ -219,6 +229,8 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     // step where they were tracked to (no event, no relocation)
     DynamicList<parcelType*> parents;
     DynamicList<breakupCriterion::verdict> verdicts;
+    DynamicList<hardSphereState> states;
+    DynamicList<symmTensor> strains;
     DynamicList<labelPair> ids;
     label nDeferred = 0;
     for (parcelType& p : cloud)
@@ -226,7 +238,8 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
         const hardSphereParcelStage& st = p.stage();
         if
         (
-            p.nPrimary() < 2
+            !agglomerates
+         || p.nPrimary() < 2
          || !st.positionKnown()
          || st.collided()
          || st.formed()
@@ -236,7 +249,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
         }
 
         const label celli = p.cell();
-        const symmTensor S(symm(gradU[celli]));
+        const symmTensor S(symm(tgradU()[celli]));
         const scalar nu = mu[celli]/rho[celli];
         const scalar nut = nutPtr ? (*nutPtr)[celli] : 0;
 
@@ -302,6 +315,8 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             }
             parents.append(&p);
             verdicts.append(v);
+            states.append(s);
+            strains.append(S);
             ids.append(labelPair(p.origProc(), p.origId()));
         }
     }
@@ -313,9 +328,8 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     scalar dKE = 0;
     forAll(parents, i)
     {
-        parcelType& p = *parents[i];
-        const symmTensor S(symm(gradU[p.cell()]));
-        dKE += split(p, newIds[i], verdicts[i], S);
+        dKE +=
+            split(*parents[i], newIds[i], verdicts[i], states[i], strains[i]);
         ++nEvents[verdicts[i].mechanism];
     }
 
