@@ -30,6 +30,17 @@ BREAKUP = ("breakupModel stressThreshold;\n    stressThresholdCoeffs {"
            f" gap {GAP}; spin conserveL; }} }}")
 
 
+def kernel(hamaker=None, structure="CSM"):
+    """The box cases' kernel (boxcase.KERNEL) with EAM, smooth walls and,
+    where given, another Hamaker constant or structure model."""
+    k = boxcase.KERNEL.replace("structureModel CSM;",
+                               f"structureModel {structure};")
+    if hamaker is not None:
+        k = k.replace("H 6.3e-20", f"H {hamaker!r}")
+    return k + ("    agglomerationModel EAM;\n"
+                f"    walls {{ \".*\" {boxcase.WALL} }}\n")
+
+
 def packing(n):
     return CSM_F.get(n, F_LARGE)
 
@@ -91,9 +102,7 @@ def spinning_case(case, structure, factors=(0.99, 1.01)):
                                  0.5e-3), U=(0, 0, 0), d=da, rho=rho,
                               nPrimary=n,
                               omega=(0, 0, fac * omega_crit(n, structure))))
-    hs = boxcase.KERNEL.replace("structureModel CSM;",
-                                f"structureModel {structure};") + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel(structure=structure)
     boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=parts, dt=1e-7, end_time=1e-7,
                      hard_sphere=hs, breakup=BREAKUP)
@@ -189,8 +198,7 @@ def boundary_case(case, decompose=(1, 1, 1), steps=2, write=None):
     parts = [dict(x=(1e-3 + (2e-6 if i % 2 else -2e-6),
                      0.12e-3 + 0.15e-3 * i, 0.5e-3), U=(0, 0, 0), d=da,
                   rho=rho, nPrimary=n, omega=(0, 0, w)) for i in range(6)]
-    hs = boxcase.KERNEL + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel()
     boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=parts, dt=1e-7, end_time=steps * 1e-7,
                      write_interval=write, hard_sphere=hs, breakup=BREAKUP,
@@ -244,8 +252,7 @@ def test_restart_continues_the_fragment_ids(case_dir, foam_env):
     da, rho = size_density(1000, "CSM")
     part = [dict(x=(1e-3, 0.5e-3, 0.5e-3), U=(0, 0, 0), d=da, rho=rho,
                  nPrimary=1000, omega=(0, 0, 1.5 * omega_crit(1000, "CSM")))]
-    hs = boxcase.KERNEL + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel()
     runs = {}
     for name in ("whole", "restart", "corrupt"):
         case = case_dir / name
@@ -315,8 +322,7 @@ def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor):
     u0 = gamma * (y0 - L_C[1] / 2)
     part = [dict(x=x0, U=(u0, 0, 0), d=da, rho=rho, nPrimary=n,
                  omega=(0, 0, -gamma / 2))]
-    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel(h_weak)
     brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
                           "mechanisms (turbulence); Cv 1; Ci 1;")
     assert "turbulence" in brk
@@ -356,8 +362,7 @@ def test_fragments_never_re_stick_in_still_fluid(case_dir, foam_env):
     w = 1.01 * omega_crit(n, "CSM")
     part = [dict(x=(1e-3, 0.5e-3, 0.5e-3), U=(0, 0, 0), d=da, rho=rho,
                  nPrimary=n, omega=(0, 0, w))]
-    hs = boxcase.KERNEL + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel()
     boxcase.box_case(case_dir, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=part, dt=1e-7, end_time=2e-6,
                      write_interval=5, hard_sphere=hs, breakup=BREAKUP)
@@ -408,8 +413,7 @@ def test_break_time_independent_of_the_time_step(case_dir, foam_env,
     part = [dict(x=(0.5e-3, y0, 0.25e-3),
                  U=(gamma * (y0 - 0.5e-3), 0, 0), d=da, rho=rho,
                  nPrimary=n, omega=(0, 0, 0))]
-    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel(h_weak)
     Lb, nb = (1e-3, 1e-3, 0.5e-3), (5, 10, 2)
     uw = gamma * Lb[1] / 2
     boxcase.box_case(case_dir, L=Lb, n=nb,
@@ -455,8 +459,7 @@ def many_parents(case, mode, decompose=(1, 1, 1)):
                     U=tuple(rng.uniform(-1e-3, 1e-3, 3)), d=da, rho=rho,
                     nPrimary=n, omega=tuple(w * axis)))
     assert len(parts) == 10164
-    hs = boxcase.KERNEL + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel()
     brk = BREAKUP.replace("mode erosion;", f"mode {mode};")
     boxcase.box_case(case, L=(2.2e-3, 2.2e-3, 2.1e-3), n=(11, 11, 10),
                      particles=parts, dt=1e-7, end_time=1e-7,
@@ -532,8 +535,7 @@ def test_stochastic_rate_breaks_the_expected_share(case_dir, foam_env,
                     x=(0.3e-3 + 0.6e-3 * i, y, 0.25e-3 + 0.5e-3 * k),
                     U=(gamma * (y - L_C[1] / 2), 0, 0), d=da, rho=rho,
                     nPrimary=n, omega=(0, 0, -gamma / 2)))
-    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel(h_weak)
     brk = BREAKUP.replace(
         "mechanisms (rotation); rotationFactor 0.0625;",
         "mechanisms (turbulence); Cv 1; Ci 1;").replace(
@@ -593,8 +595,7 @@ def test_critical_drag_slip(case_dir, foam_env, ratio):
     tau = rho * da ** 2 / (18 * mu)
     part = [dict(x=(1e-3, 0.5e-3, 0.5e-3), U=(u0, 0, 0), d=da, rho=rho,
                  nPrimary=n)]
-    hs = boxcase.KERNEL.replace("H 6.3e-20", f"H {h_weak!r}") + \
-        f"    agglomerationModel EAM;\n    walls {{ \".*\" {boxcase.WALL} }}\n"
+    hs = kernel(h_weak)
     brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
                           "mechanisms (drag); Cd 1;")
     assert "(drag)" in brk
