@@ -26,8 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionEvent.H"
-#include <cstring>
-#include <cstdint>
+#include "eventRecord.H"
 #include <cmath>
 #include <sstream>
 
@@ -35,87 +34,11 @@ License
 
 namespace
 {
-
-template<class T>
-void put(char* buf, std::size_t& pos, const T v)
-{
-    std::memcpy(buf + pos, &v, sizeof(T));
-    pos += sizeof(T);
+    using Foam::eventRecord::put;
+    using Foam::eventRecord::get;
+    using Foam::eventRecord::putState;
+    using Foam::eventRecord::getState;
 }
-
-template<class T>
-T get(const char* buf, std::size_t& pos)
-{
-    T v;
-    std::memcpy(&v, buf + pos, sizeof(T));
-    pos += sizeof(T);
-    return v;
-}
-
-void putState(char* buf, std::size_t& pos, const Foam::hardSphereState& s)
-{
-    for (const Foam::vector* v : {&s.x, &s.U, &s.omega})
-    {
-        for (Foam::direction c = 0; c < 3; ++c)
-        {
-            put<double>(buf, pos, (*v)[c]);
-        }
-    }
-    put<double>(buf, pos, s.d);
-    put<double>(buf, pos, s.rho);
-}
-
-void getState(const char* buf, std::size_t& pos, Foam::hardSphereState& s)
-{
-    for (Foam::vector* v : {&s.x, &s.U, &s.omega})
-    {
-        for (Foam::direction c = 0; c < 3; ++c)
-        {
-            (*v)[c] = get<double>(buf, pos);
-        }
-    }
-    s.d = get<double>(buf, pos);
-    s.rho = get<double>(buf, pos);
-}
-
-//- The bounds of a record's values (doc/eventLog.md, "Valid records";
-//  aggloTools.eventlog checks the same): wide enough for any particle of
-//  a flow, narrow enough that the kernels' products (masses, energies,
-//  moments of inertia) stay finite, so that a corrupt record is refused
-//  instead of stopping the replay with a floating-point exception
-const Foam::scalar dMin = 1e-9, dMax = 1;           // m
-const Foam::scalar rhoMin = 1e-3, rhoMax = 1e6;     // kg/m3
-const Foam::scalar xMax = 1e6;                      // m, per component
-const Foam::scalar UMax = 1e4;                      // m/s, per component
-const Foam::scalar omegaMax = 1e12;                 // rad/s, per component
-
-
-//- A vector as text, (x y z)
-std::string text(const Foam::vector& v)
-{
-    std::ostringstream os;
-    os << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
-    return os.str();
-}
-
-
-//- True if every component of v is finite and within +-bound
-bool bounded(const Foam::vector& v, const Foam::scalar bound)
-{
-    for (const Foam::scalar c : {v.x(), v.y(), v.z()})
-    {
-        if (!(std::isfinite(c) && std::abs(c) <= bound))
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-
-//- The reason why a record read from a log cannot be a logged collision
-//  (empty if it can be one); buf: the record as read
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -252,41 +175,10 @@ std::string Foam::collisionEvent::invalid
         {
             break;
         }
-        const int k = p == &e.p1 ? 1 : 2;
-        if (!(std::isfinite(p->d) && p->d >= dMin && p->d <= dMax))
-        {
-            os << "partner " << k << ": d " << p->d << " (valid: "
-               << dMin << " - " << dMax << " m)";
-        }
-        else if
+        os << Foam::eventRecord::invalidState
         (
-            !(std::isfinite(p->rho) && p->rho >= rhoMin && p->rho <= rhoMax)
-        )
-        {
-            os << "partner " << k << ": rho " << p->rho << " (valid: "
-               << rhoMin << " - " << rhoMax << " kg/m3)";
-        }
-        else if (p->nPrimary < 1)
-        {
-            os << "partner " << k << ": nPrimary " << p->nPrimary
-               << " (valid: >= 1)";
-        }
-        else if (!bounded(p->x, xMax))
-        {
-            os << "partner " << k << ": position " << text(p->x) << " (valid:"
-               << " finite, each component within +-" << xMax << " m)";
-        }
-        else if (!bounded(p->U, UMax))
-        {
-            os << "partner " << k << ": velocity " << text(p->U) << " (valid:"
-               << " finite, each component within +-" << UMax << " m/s)";
-        }
-        else if (!bounded(p->omega, omegaMax))
-        {
-            os << "partner " << k << ": spin " << text(p->omega) << " (valid:"
-               << " finite, each component within +-" << omegaMax
-               << " rad/s)";
-        }
+            *p, p == &e.p1 ? "partner 1" : "partner 2"
+        );
     }
     return os.str();
 }

@@ -29,10 +29,6 @@ License
 #include "meshWavePatchDistMethod.H"
 #include "volFields.H"
 #include "wallPolyPatch.H"
-#include "OSspecific.H"
-#include "Pstream.H"
-#include "IOdictionary.H"
-#include "cloud.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -66,26 +62,6 @@ Foam::scalarField wallDistance(const Foam::fvMesh& mesh)
     return y.primitiveField();
 }
 
-//- The record of the log at a written time
-Foam::IOobject recordIO
-(
-    const Foam::fvMesh& mesh,
-    const Foam::word& cloudName,
-    const Foam::IOobject::readOption r
-)
-{
-    return Foam::IOobject
-    (
-        "collisionEventLog",
-        mesh.time().timeName(),
-        "uniform"/Foam::cloud::prefix/cloudName,
-        mesh,
-        r,
-        Foam::IOobject::NO_WRITE,
-        false
-    );
-}
-
 } // End anonymous namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -98,102 +74,9 @@ Foam::collisionEventLog::collisionEventLog
 )
 :
     mesh_(mesh),
-    file_
-    (
-        folder(mesh.time(), cloudName)
-       /("events" + Foam::name(Pstream::myProcNo()) + ".bin")
-    ),
-    branches_(branches),
-    buffer_(),
-    nWritten_(0),
-    cloudName_(cloudName),
-    nInFile_(0),
-    nOthers_(0),
+    files_(mesh, cloudName, "CollisionEvents", "collisionEventLog", branches),
     y_(wallDistance(mesh))
-{
-    const fileName dir(folder(mesh.time(), cloudName));
-    const label start = mesh.time().timeIndex();
-    label removed = 0;
-    if (Pstream::master())
-    {
-        mkDir(dir);
-        for (const fileName& f : readDir(dir, fileName::FILE))
-        {
-            if (f.hasExt("bin") && f.startsWith("events"))
-            {
-                removed += collisionEventFile::truncateAfter(dir/f, start);
-            }
-        }
-    }
-    // Every rank appends only after the master has cut the files back;
-    // its file exists from the start (an empty log is a log)
-    reduce(removed, sumOp<label>());
-    mkDir(dir);
-    collisionEventFile::append(file_, List<collisionEvent>(), branches_);
-    nInFile_ = collisionEventFile::size(file_);
-    if (Pstream::master())
-    {
-        for (const fileName& f : readDir(dir, fileName::FILE))
-        {
-            // events<rank>.bin of a rank this run does not have
-            const std::string rank(f.nameLessExt().substr(6));
-            label r = -1;
-            if
-            (
-                f.hasExt("bin") && f.startsWith("events")
-             && !(readLabel(rank, r) && r >= 0 && r < Pstream::nProcs())
-            )
-            {
-                nOthers_ += collisionEventFile::size(dir/f);
-            }
-        }
-    }
-
-    // The log must hold what it held when the start time was written: a
-    // run from an earlier time cuts it back, and time folders after that
-    // run's end are from the older run
-    IOobject io(recordIO(mesh, cloudName, IOobject::MUST_READ));
-    const label nHeld = returnReduce(nInFile_ + nOthers_, sumOp<label>());
-    const bool readable = io.typeHeaderOk<IOdictionary>(true);
-    if (!readable && isFile(io.objectPath()))
-    {
-        // Written, but empty or cut off: the count cannot be checked
-        FatalErrorInFunction
-            << "The record " << io.objectPath() << " of the collision-event"
-            << " log is empty or cut off: the events logged up to time "
-            << mesh.time().timeName() << " cannot be checked. Restart from"
-            << " an earlier time" << exit(FatalError);
-    }
-    if (readable)
-    {
-        const label nRecorded = IOdictionary(io).get<label>("nEvents");
-        if (nHeld != nRecorded)
-        {
-            FatalErrorInFunction
-                << "The collision-event log " << dir << " holds " << nHeld
-                << " events up to time " << mesh.time().timeName()
-                << ", but " << nRecorded << " were logged when this time"
-                << " was written (" << io.objectPath() << "). A run from"
-                << " an earlier time has cut the log back since: the time"
-                << " folders after that run's end are from an older run."
-                << " Remove them and start from the last time that run"
-                << " wrote, or switch eventLog off" << exit(FatalError);
-        }
-    }
-
-    Info<< "    eventLog: " << dir << " (time index " << start;
-    if (removed)
-    {
-        Info<< "; " << removed << " events after it removed";
-    }
-    Info<< ")" << endl;
-}
-
-
-Foam::collisionEventLog::~collisionEventLog()
-{
-    flush();
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -205,8 +88,10 @@ Foam::fileName Foam::collisionEventLog::folder
 )
 {
     return
-        runTime.globalPath()/"postProcessing"
-       /(cloudName + "CollisionEvents");
+        eventLogFiles<collisionEvent>::folder
+        (
+            runTime, cloudName, "CollisionEvents"
+        );
 }
 
 
@@ -225,37 +110,7 @@ void Foam::collisionEventLog::observe(const collisionEventRecord& event)
     e.p1 = event.s1;
     e.p2 = event.s2;
     e.wallDistance = y_[event.celli];
-    buffer_.append(e);
-}
-
-
-void Foam::collisionEventLog::flush()
-{
-    if (buffer_.size())
-    {
-        collisionEventFile::append(file_, buffer_, branches_);
-        nWritten_ += buffer_.size();
-        nInFile_ += buffer_.size();
-        buffer_.clear();
-    }
-}
-
-
-void Foam::collisionEventLog::write()
-{
-    flush();
-    IOdictionary record(recordIO(mesh_, cloudName_, IOobject::NO_READ));
-    record.add
-    (
-        "nEvents", returnReduce(nInFile_ + nOthers_, sumOp<label>())
-    );
-    record.regIOobject::writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
-    );
+    files_.append(e);
 }
 
 

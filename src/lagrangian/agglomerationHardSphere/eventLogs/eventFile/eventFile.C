@@ -25,20 +25,17 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "collisionEventFile.H"
+#include "eventFile.H"
 #include "error.H"
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
 #include <sys/stat.h>
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-namespace
-{
-
-//- The size of a file in bytes (-1 if it does not exist)
-long long fileBytes(const Foam::fileName& file)
+template<class Event>
+long long Foam::eventFile<Event>::fileBytes(const fileName& file)
 {
     struct stat st;
     if (::stat(file.c_str(), &st) != 0)
@@ -49,89 +46,92 @@ long long fileBytes(const Foam::fileName& file)
 }
 
 
-//- Check the layout of the header and return the branches it names
-Foam::wordList checkHeader(std::istream& is, const Foam::fileName& file)
+template<class Event>
+Foam::wordList Foam::eventFile<Event>::checkHeader
+(
+    std::istream& is,
+    const fileName& file
+)
 {
-    std::string head(Foam::collisionEventFile::headerBytes, ' ');
+    std::string head(headerBytes, ' ');
     is.read(&head[0], head.size());
-    const std::string want
-    (
-        Foam::collisionEventFile::layout() + " branches "
-    );
+    const std::string want(layout() + " " + Event::namesKey() + " ");
     if (!is || head.compare(0, want.size(), want) != 0)
     {
         FatalErrorInFunction
-            << "Collision event file " << file << " does not start with"
-            << " the header of this build:" << Foam::nl << "    " << want
-            << "<names>" << Foam::nl << "(another layout or machine, or"
-            << " not an event file)" << Foam::exit(Foam::FatalError);
+            << Event::title() << " file " << file << " does not start with"
+            << " the header of this build:" << nl << "    " << want
+            << "<names>" << nl << "(another layout or machine, or not an"
+            << " event file)" << exit(FatalError);
     }
 
     std::istringstream names(head.substr(want.size()));
     std::string list;
     names >> list;
-    Foam::wordList branches;
+    wordList result;
     std::istringstream items(list);
     std::string name;
     while (std::getline(items, name, ','))
     {
-        branches.append(Foam::word(name));
+        result.append(word(name));
     }
-    if (branches.empty())
+    if (result.empty())
     {
         FatalErrorInFunction
-            << "Collision event file " << file << ": the header names no"
-            << " branch" << Foam::exit(Foam::FatalError);
+            << Event::title() << " file " << file << ": the header names no"
+            << " " << Event::namesKey() << exit(FatalError);
     }
-    return branches;
+    return result;
 }
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const std::size_t Foam::collisionEventFile::headerBytes;
+template<class Event>
+const std::size_t Foam::eventFile<Event>::headerBytes;
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-std::string Foam::collisionEventFile::layout()
+template<class Event>
+std::string Foam::eventFile<Event>::layout()
 {
     const int one = 1;
     const bool lsb = *reinterpret_cast<const char*>(&one) == 1;
     std::ostringstream os;
-    os  << "aggloCollisionEvents 2 recordBytes "
-        << collisionEvent::recordBytes << " arch "
-        << (lsb ? "LSB" : "MSB") << ";label=32;scalar=64";
+    os  << Event::fileTag() << " recordBytes " << Event::recordBytes
+        << " arch " << (lsb ? "LSB" : "MSB") << ";label=32;scalar=64";
     return os.str();
 }
 
 
-std::string Foam::collisionEventFile::header(const wordList& branches)
+template<class Event>
+std::string Foam::eventFile<Event>::header(const wordList& names)
 {
-    std::string head(layout() + " branches ");
-    forAll(branches, b)
+    std::string head(layout() + " " + Event::namesKey() + " ");
+    forAll(names, b)
     {
-        head += (b ? "," : "") + std::string(branches[b]);
+        head += (b ? "," : "") + std::string(names[b]);
     }
-    if (branches.empty() || head.size() >= headerBytes)
+    if (names.empty() || head.size() >= headerBytes)
     {
         FatalErrorInFunction
-            << "The branch names " << branches << " do not fit the "
-            << label(headerBytes) << "-byte header of the collision event"
-            << " log (at least one, " << label(headerBytes - 1)
-            << " characters in all with the layout)" << exit(FatalError);
+            << "The names " << names << " do not fit the "
+            << label(headerBytes) << "-byte header of the "
+            << Event::title() << " log (at least one, "
+            << label(headerBytes - 1) << " characters in all with the"
+            << " layout)" << exit(FatalError);
     }
     return head;
 }
 
 
-void Foam::collisionEventFile::append
+template<class Event>
+void Foam::eventFile<Event>::append
 (
     const fileName& file,
-    const UList<collisionEvent>& events,
-    const wordList& branches
+    const UList<Event>& events,
+    const wordList& names
 )
 {
     long long size = fileBytes(file);
@@ -139,16 +139,16 @@ void Foam::collisionEventFile::append
     {
         std::ifstream is(file.c_str(), std::ios::binary);
         const wordList inFile(checkHeader(is, file));
-        if (inFile != branches)
+        if (inFile != names)
         {
             if (size > static_cast<long long>(headerBytes))
             {
                 FatalErrorInFunction
-                    << "Collision event file " << file << " holds events"
-                    << " of an agglomeration model with the branches "
-                    << inFile << "; this run's model has " << branches
-                    << ": move the folder away to start a new log"
-                    << exit(FatalError);
+                    << Event::title() << " file " << file << " holds events"
+                    << " of " << Event::namesOwner() << " with the "
+                    << Event::namesKey() << " " << inFile << "; this run's"
+                    << " model has " << names << ": move the folder away"
+                    << " to start a new log" << exit(FatalError);
             }
             // No event yet: the header follows this run's model
             size = 0;
@@ -162,65 +162,69 @@ void Foam::collisionEventFile::append
     );
     if (size <= 0)
     {
-        std::string head(header(branches));
+        std::string head(header(names));
         head.resize(headerBytes - 1, ' ');
         head += '\n';
         os.write(head.data(), head.size());
     }
 
-    char buf[collisionEvent::recordBytes];
-    for (const collisionEvent& e : events)
+    char buf[Event::recordBytes];
+    for (const Event& e : events)
     {
         e.pack(buf);
-        os.write(buf, collisionEvent::recordBytes);
+        os.write(buf, Event::recordBytes);
     }
     os.flush();
     if (!os)
     {
         FatalErrorInFunction
-            << "Cannot append to the collision event file " << file
-            << exit(FatalError);
+            << "Cannot append to the " << Event::title() << " file "
+            << file << exit(FatalError);
     }
 }
 
 
-Foam::List<Foam::collisionEvent>
-Foam::collisionEventFile::read(const fileName& file, wordList& branches)
+template<class Event>
+Foam::List<Event> Foam::eventFile<Event>::read
+(
+    const fileName& file,
+    wordList& names
+)
 {
     const long long size = fileBytes(file);
     if (size < 0)
     {
         FatalErrorInFunction
-            << "No collision event file " << file << exit(FatalError);
+            << "No " << Event::title() << " file " << file
+            << exit(FatalError);
     }
     const long long body = size - headerBytes;
-    if (body < 0 || body % collisionEvent::recordBytes)
+    if (body < 0 || body % Event::recordBytes)
     {
         FatalErrorInFunction
-            << "Collision event file " << file << " has " << label(size)
+            << Event::title() << " file " << file << " has " << label(size)
             << " bytes: not the header plus whole records of "
-            << label(collisionEvent::recordBytes) << " bytes (a write"
-            << " cut off? a restart of the run cuts it back)"
-            << exit(FatalError);
+            << label(Event::recordBytes) << " bytes (a write cut off? a"
+            << " restart of the run cuts it back)" << exit(FatalError);
     }
 
     std::ifstream is(file.c_str(), std::ios::binary);
-    branches = checkHeader(is, file);
+    names = checkHeader(is, file);
 
-    List<collisionEvent> events(body/collisionEvent::recordBytes);
-    char buf[collisionEvent::recordBytes];
+    List<Event> events(body/Event::recordBytes);
+    char buf[Event::recordBytes];
     forAll(events, k)
     {
-        collisionEvent& e = events[k];
-        is.read(buf, collisionEvent::recordBytes);
+        Event& e = events[k];
+        is.read(buf, Event::recordBytes);
         e.unpack(buf);
 
-        // A corrupt record would be replayed as a collision
-        const std::string why(e.invalid(buf, branches.size()));
+        // A corrupt record would be replayed as an event
+        const std::string why(e.invalid(buf, names.size()));
         if (!why.empty())
         {
             FatalErrorInFunction
-                << "Collision event file " << file << ", record " << k
+                << Event::title() << " file " << file << ", record " << k
                 << ": " << why.c_str() << "; the file is corrupt"
                 << exit(FatalError);
         }
@@ -229,17 +233,19 @@ Foam::collisionEventFile::read(const fileName& file, wordList& branches)
 }
 
 
-Foam::label Foam::collisionEventFile::size(const fileName& file)
+template<class Event>
+Foam::label Foam::eventFile<Event>::size(const fileName& file)
 {
     const long long bytes = fileBytes(file);
     return
         bytes > static_cast<long long>(headerBytes)
-      ? label((bytes - headerBytes)/collisionEvent::recordBytes)
+      ? label((bytes - headerBytes)/Event::recordBytes)
       : 0;
 }
 
 
-Foam::label Foam::collisionEventFile::truncateAfter
+template<class Event>
+Foam::label Foam::eventFile<Event>::truncateAfter
 (
     const fileName& file,
     const label timeIndex
@@ -250,7 +256,7 @@ Foam::label Foam::collisionEventFile::truncateAfter
     {
         return 0;
     }
-    const std::size_t R = collisionEvent::recordBytes;
+    const std::size_t R = Event::recordBytes;
     long long keep = 0;
     label removed = 0;
     if (size >= static_cast<long long>(headerBytes))
@@ -259,7 +265,7 @@ Foam::label Foam::collisionEventFile::truncateAfter
         checkHeader(is, file);
         keep = headerBytes;
         char buf[R];
-        collisionEvent e;
+        Event e;
         while (is.read(buf, R))
         {
             e.unpack(buf);
@@ -278,7 +284,7 @@ Foam::label Foam::collisionEventFile::truncateAfter
     if (keep != size && ::truncate(file.c_str(), keep) != 0)
     {
         FatalErrorInFunction
-            << "Cannot cut back the collision event file " << file
+            << "Cannot cut back the " << Event::title() << " file " << file
             << exit(FatalError);
     }
     return removed;
