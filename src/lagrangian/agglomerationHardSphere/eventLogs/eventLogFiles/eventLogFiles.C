@@ -134,7 +134,7 @@ Foam::eventLogFiles<Event>::eventLogFiles
     {
         // Written, but empty or cut off: the count cannot be checked
         FatalErrorInFunction
-            << "The record " << io.objectPath() << " of the " << what()
+            << "The record " << io.objectPath() << " of the " << what().c_str()
             << " is empty or cut off: the events logged up to time "
             << mesh.time().timeName() << " cannot be checked. Restart from"
             << " an earlier time" << exit(FatalError);
@@ -145,7 +145,8 @@ Foam::eventLogFiles<Event>::eventLogFiles
         if (nHeld != nRecorded)
         {
             FatalErrorInFunction
-                << "The " << what() << " " << dir_ << " holds " << nHeld
+                << "The " << what().c_str() << " " << dir_ << " holds "
+                << nHeld
                 << " events up to time " << mesh.time().timeName()
                 << ", but " << nRecorded << " were logged when this time"
                 << " was written (" << io.objectPath() << "). A run from"

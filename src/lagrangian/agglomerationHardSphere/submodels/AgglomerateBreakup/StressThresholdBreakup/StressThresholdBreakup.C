@@ -27,8 +27,6 @@ License
 #include "StressThresholdBreakup.H"
 #include "hardSphereCollisionKernel.H"
 #include "hardSphereInput.H"
-#include "keyedRandom.H"
-#include "randomStreams.H"
 #include "fvcGrad.H"
 #include "hardSphereStep.H"
 
@@ -56,11 +54,9 @@ template<class CloudType>
 const Foam::dictionary&
 Foam::StressThresholdBreakup<CloudType>::checkedCoeffs(const dictionary& dict)
 {
-    hardSphereInput::checkKeys
-    (
-        dict,
-        {"randomSeed", "strength", "stresses", "fragmentation", "rate"}
-    );
+    wordList valid(breakupKernel::keys());
+    valid.append("eventLog");
+    hardSphereInput::checkKeys(dict, valid);
     return dict;
 }
 
@@ -92,30 +88,24 @@ template<class CloudType>
 Foam::scalar Foam::StressThresholdBreakup<CloudType>::split
 (
     parcelType& p,
-    const label newId,
-    const breakupCriterion::verdict& v,
-    const hardSphereState& parent,
-    const symmTensor& S
+    breakupEvent& e
 )
 {
-    keyedRandom rnd
-    (
-        randomSeed_, randomStreams::breakup, p.origProc(), p.origId(),
-        this->owner().db().time().timeIndex(), 0
-    );
-    const label N1 = fragmentation_.fragmentSize(parent.nPrimary, rnd);
-    const vector e =
-        fragmentation_.direction
-        (
-            S, parent.omega, v.mechanism == breakupStresses::ROTATION, rnd
-        );
     const agglomerateFragmentation::fragments f =
-        fragmentation_.split(parent, N1, e);
+        kernel_.split
+        (
+            e.parent,
+            {e.mechanism, e.ratio, 0},
+            e.S,
+            {e.proc, e.id, e.timeIndex}
+        );
+    e.a = f.a;
+    e.b = f.b;
 
     // Fragment a: a new parcel, a copy of the parent in its cell
     parcelType* q = static_cast<parcelType*>(p.clone().ptr());
-    q->origProc() = fragmentIds::origProc;
-    q->origId() = newId;
+    q->origProc() = e.newProc;
+    q->origId() = e.newId;
     q->lastPartnerProc() = -1;
     q->lastPartnerId() = -1;
 
@@ -149,29 +139,13 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
 )
 :
     AgglomerateBreakupModel<CloudType>(dict, owner, typeName),
-    kernel_(kernelOf(owner)),
-    criterion_
+    kernel_
     (
         checkedCoeffs(this->coeffDict()),
-        kernel_.material(),
-        kernel_.structure()
+        kernelOf(owner).material(),
+        kernelOf(owner).structure()
     ),
-    fragmentation_
-    (
-        this->coeffDict().subDict("fragmentation"),
-        kernel_.structure(),
-        kernel_.material().rho0()
-    ),
-    rate_
-    (
-        this->coeffDict().found("rate")
-      ? breakupRate(this->coeffDict().subDict("rate"))
-      : breakupRate()
-    ),
-    randomSeed_
-    (
-        this->coeffDict().template getOrDefault<label>("randomSeed", 0)
-    ),
+    log_(nullptr),
     columns_(-1, -1)
 {
     // This model's columns of the statistics
@@ -189,8 +163,21 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
         ).addColumns(counters, {"breakupEnergyChange"});
 
     Info<< "    agglomerate break-up: stressThreshold (doc/breakup.md), ";
-    rate_.write(Info);
+    kernel_.writeRate(Info);
     Info<< endl;
+
+    if (this->coeffDict().template getOrDefault<bool>("eventLog", false))
+    {
+        log_.reset
+        (
+            new eventLogFiles<breakupEvent>
+            (
+                owner.mesh(), owner.name(), "BreakupEvents",
+                "breakupEventLog",
+                breakupStresses::mechanismTypeNames.names()
+            )
+        );
+    }
 }
 
 
@@ -227,10 +214,9 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
 
     // The agglomerates that break, checked once each: those that ended the
     // step where they were tracked to (no event, no relocation)
+    const Time& runTime = cloud.db().time();
     DynamicList<parcelType*> parents;
-    DynamicList<breakupCriterion::verdict> verdicts;
-    DynamicList<hardSphereState> states;
-    DynamicList<symmTensor> strains;
+    DynamicList<breakupEvent> events;
     DynamicList<labelPair> ids;
     label nDeferred = 0;
     for (parcelType& p : cloud)
@@ -259,7 +245,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
         L.rhoF = rho[celli];
         L.omega = p.omega();
         L.dragForce = Zero;
-        if (criterion_.stresses().on(breakupStresses::DRAG))
+        if (kernel_.criterion().stresses().on(breakupStresses::DRAG))
         {
             p.setCellValues(cloud, td);
             L.dragForce = dragForce(p, td);
@@ -270,32 +256,15 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             p.stage().knownPosition(), p.U(), p.omega(), p.d(), p.rho(),
             p.nPrimary()
         );
-        const breakupCriterion::verdict v = criterion_.check(s, L);
-        if
-        (
-            v.breaks()
-         && v.mechanism == breakupStresses::TURBULENCE
-         && rate_.stochastic()
-        )
+        const breakupCriterion::verdict v = kernel_.check(s, L);
+        const breakupKernel::key k
         {
-            keyedRandom rnd
-            (
-                randomSeed_, randomStreams::breakupRate, p.origProc(),
-                p.origId(), cloud.db().time().timeIndex(), 0
-            );
-            if
-            (
-                rnd.sample01()
-             >= rate_.probability
-                (
-                    cloud.db().time().deltaTValue(), L.epsilon, L.nu,
-                    p.d()
-                )
-            )
-            {
-                ++nDeferred;
-                continue;
-            }
+            p.origProc(), p.origId(), runTime.timeIndex()
+        };
+        if (kernel_.deferred(v, L, p.d(), runTime.deltaTValue(), k))
+        {
+            ++nDeferred;
+            continue;
         }
         if (v.breaks())
         {
@@ -313,10 +282,18 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
                     << mag(p.U()) << " m/s, |omega| " << mag(p.omega())
                     << " 1/s" << endl;
             }
+            breakupEvent e;
+            e.timeIndex = k.timeIndex;
+            e.mechanism = v.mechanism;
+            e.proc = k.origProc;
+            e.id = k.origId;
+            e.dt = runTime.deltaTValue();
+            e.parent = s;
+            e.load = L;
+            e.S = S;
+            e.ratio = v.ratio;
             parents.append(&p);
-            verdicts.append(v);
-            states.append(s);
-            strains.append(S);
+            events.append(e);
             ids.append(labelPair(p.origProc(), p.origId()));
         }
     }
@@ -328,9 +305,21 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     scalar dKE = 0;
     forAll(parents, i)
     {
-        dKE +=
-            split(*parents[i], newIds[i], verdicts[i], states[i], strains[i]);
-        ++nEvents[verdicts[i].mechanism];
+        breakupEvent& e = events[i];
+        e.newProc = fragmentIds::origProc;
+        e.newId = newIds[i];
+        dKE += split(*parents[i], e);
+        ++nEvents[e.mechanism];
+        if (log_.valid())
+        {
+            log_->append(e);
+        }
+    }
+
+    // The log goes with the written state
+    if (log_.valid() && runTime.writeTime())
+    {
+        log_->write();
     }
 
     // The statistics' columns (local: the statistics sum over the ranks)
@@ -362,7 +351,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             << ' ' << nEvents[m];
     }
     Info<< ")";
-    if (rate_.stochastic())
+    if (kernel_.rate().stochastic())
     {
         Info<< ", deferred by the rate " << nDeferred;
     }

@@ -1,0 +1,192 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+   \\    /   O peration     |
+    \\  /    A nd           | www.openfoam.com
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 agglomerationHardSphere project contributors
+-------------------------------------------------------------------------------
+License
+    This file is part of the agglomerationHardSphere extension of OpenFOAM.
+
+    It is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    It is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "breakupEvent.H"
+#include "eventRecord.H"
+#include <cmath>
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam::eventRecord;
+}
+
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const std::size_t Foam::breakupEvent::recordBytes;
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::breakupEvent::breakupEvent()
+:
+    timeIndex(0),
+    mechanism(0),
+    proc(-1),
+    id(-1),
+    newProc(-1),
+    newId(-1),
+    dt(0),
+    parent(),
+    load(),
+    S(Zero),
+    ratio(0),
+    a(),
+    b()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::breakupEvent::pack(char* buf) const
+{
+    std::size_t pos = 0;
+    put<int32_t>(buf, pos, timeIndex);
+    put<int32_t>(buf, pos, mechanism);
+    put<int32_t>(buf, pos, proc);
+    put<int32_t>(buf, pos, id);
+    put<int32_t>(buf, pos, newProc);
+    put<int32_t>(buf, pos, newId);
+    put<int32_t>(buf, pos, parent.nPrimary);
+    put<int32_t>(buf, pos, a.nPrimary);
+    put<int32_t>(buf, pos, b.nPrimary);
+    put<int32_t>(buf, pos, 0);
+    put<double>(buf, pos, dt);
+    putState(buf, pos, parent);
+    put<double>(buf, pos, load.epsilon);
+    put<double>(buf, pos, load.nu);
+    put<double>(buf, pos, load.rhoF);
+    putVector(buf, pos, load.dragForce);
+    for (direction c = 0; c < symmTensor::nComponents; ++c)
+    {
+        put<double>(buf, pos, S[c]);
+    }
+    put<double>(buf, pos, ratio);
+    putState(buf, pos, a);
+    putState(buf, pos, b);
+}
+
+
+void Foam::breakupEvent::unpack(const char* buf)
+{
+    std::size_t pos = 0;
+    timeIndex = get<int32_t>(buf, pos);
+    mechanism = get<int32_t>(buf, pos);
+    proc = get<int32_t>(buf, pos);
+    id = get<int32_t>(buf, pos);
+    newProc = get<int32_t>(buf, pos);
+    newId = get<int32_t>(buf, pos);
+    parent.nPrimary = get<int32_t>(buf, pos);
+    a.nPrimary = get<int32_t>(buf, pos);
+    b.nPrimary = get<int32_t>(buf, pos);
+    get<int32_t>(buf, pos);
+    dt = get<double>(buf, pos);
+    getState(buf, pos, parent);
+    load.epsilon = get<double>(buf, pos);
+    load.nu = get<double>(buf, pos);
+    load.rhoF = get<double>(buf, pos);
+    load.dragForce = getVector(buf, pos);
+    load.omega = parent.omega;
+    for (direction c = 0; c < symmTensor::nComponents; ++c)
+    {
+        S[c] = get<double>(buf, pos);
+    }
+    ratio = get<double>(buf, pos);
+    getState(buf, pos, a);
+    getState(buf, pos, b);
+}
+
+
+std::string Foam::breakupEvent::invalid
+(
+    const char*,
+    const label nMechanisms
+) const
+{
+    std::ostringstream os;
+    const bool finiteS =
+        std::isfinite(S.xx()) && std::isfinite(S.xy())
+     && std::isfinite(S.xz()) && std::isfinite(S.yy())
+     && std::isfinite(S.yz()) && std::isfinite(S.zz());
+    if (timeIndex < 0)
+    {
+        os << "time index " << timeIndex << " (valid: >= 0)";
+    }
+    else if (mechanism < 0 || mechanism >= nMechanisms)
+    {
+        os << "mechanism " << mechanism << " (valid: 0-"
+           << nMechanisms - 1 << ")";
+    }
+    else if (parent.nPrimary < 2)
+    {
+        os << "parent: nPrimary " << parent.nPrimary << " (valid: >= 2)";
+    }
+    else if (a.nPrimary + b.nPrimary != parent.nPrimary)
+    {
+        os << "fragments: nPrimary " << a.nPrimary << " + " << b.nPrimary
+           << " (valid: the parent's " << parent.nPrimary << ")";
+    }
+    else if (!(std::isfinite(dt) && dt > 0))
+    {
+        os << "time step " << dt << " (valid: finite, > 0)";
+    }
+    else if
+    (
+        !(std::isfinite(load.epsilon) && load.epsilon >= 0)
+     || !(std::isfinite(load.nu) && load.nu > 0)
+     || !(std::isfinite(load.rhoF) && load.rhoF > 0)
+     || !bounded(load.dragForce, 1)
+     || !finiteS
+     || !std::isfinite(ratio)
+    )
+    {
+        os << "load: epsilon " << load.epsilon << ", nu " << load.nu
+           << ", rho " << load.rhoF << ", drag force "
+           << text(load.dragForce) << ", ratio " << ratio
+           << " (valid: finite; epsilon >= 0, nu, rho > 0, each component"
+           << " of the drag force within +-1 N)";
+    }
+    for (const hardSphereState* p : {&parent, &a, &b})
+    {
+        if (!os.str().empty())
+        {
+            break;
+        }
+        os << invalidState
+        (
+            *p,
+            p == &parent ? "parent" : (p == &a ? "fragment a" : "fragment b")
+        );
+    }
+    return os.str();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,164 @@
+"""The break-up event log (stressThresholdCoeffs: eventLog true;
+doc/eventLog.md) of a running cloud and its replay by breakupReplay:
+agglomerates of 2-12 primaries in laminar shear above their critical
+shear rate, with all three mechanisms, beta-distributed fragment sizes
+and the stochastic rate, so that they break over several steps. The log
+holds exactly the break-ups that the statistics count, by mechanism;
+each record keeps the primaries, the mass and the momentum of its
+parent; the run's kernel replayed reproduces every fragment bit for
+bit; a stronger variant breaks exactly the logged break-ups whose
+stress/strength exceeds its factor; a restart from a middle write
+neither repeats nor loses a break-up; a corrupt or altered record is
+caught."""
+
+import json
+import shutil
+
+import numpy as np
+import pytest
+
+from aggloTools import boxcase, breakuplog
+from aggloTools.runner import CommandError, foam_bin, run
+from aggloTools.stats import stats_rows
+from test_stressThresholdBreakup import (BREAKUP, GAMMA_CRIT, H, L_C, N_C,
+                                         NU_F, RHO_F, kernel, size_density,
+                                         tensile_strength)
+
+STEPS, WRITE = 6, 2
+
+
+def shear_case(case):
+    """432 agglomerates of 2-12 CSM primaries in shear at 3 times the
+    critical shear rate of N = 2 (the bonds weakened to give it), in
+    |y - h/2| < 2 mm (a displacement per step below 2 mm), spinning at
+    0.5-4 times gamma/2: most break by rotation first, their fragments
+    then by turbulence (a share deferred by the stochastic rate, dt = t_K)
+    and by drag, over six steps (2350 break-ups: 312 turbulence, 400
+    drag, 1638 rotation)."""
+    gamma = 3 * GAMMA_CRIT
+    rng = np.random.default_rng(3)
+    parts = []
+    for i in range(12):
+        for j in range(12):
+            for k in range(3):
+                n = int(rng.integers(2, 13))
+                da, rho = size_density(n, "CSM")
+                y = 3e-3 + 0.36e-3 * j
+                parts.append(dict(
+                    x=(0.4e-3 + 0.8e-3 * i, y, 0.8e-3 + 1.6e-3 * k),
+                    U=(gamma * (y - L_C[1] / 2) + 1e-3 * rng.normal(),
+                       0, 0), d=da, rho=rho, nPrimary=n,
+                    omega=(0, 0, -gamma / 2 * rng.uniform(0.5, 4))))
+    h_weak = H * GAMMA_CRIT * NU_F * RHO_F / tensile_strength(2, "CSM")
+    brk = BREAKUP.replace(
+        "mechanisms (rotation); rotationFactor 0.0625;",
+        "mechanisms (turbulence drag rotation); Cv 1; Ci 1; Cd 1;"
+        " rotationFactor 0.0625;").replace(
+        "mode erosion;", "mode beta; betaAlpha 0.5;").replace(
+        "spin conserveL; }",
+        "spin conserveL; } rate { model stochastic; timeScale kolmogorov;"
+        " } eventLog true;")
+    assert "beta" in brk and "eventLog true" in brk
+    dt = 1 / gamma
+    uw = gamma * L_C[1] / 2
+    boxcase.box_case(case, L=L_C, n=N_C,
+                     kinds=("cyclic", "wall", "cyclic"), particles=parts,
+                     dt=dt, end_time=STEPS * dt, write_interval=WRITE,
+                     nu=NU_F, rho_f=RHO_F,
+                     wall_velocity={"yMin": (-uw, 0, 0),
+                                    "yMax": (uw, 0, 0)},
+                     forces="{ SchillerNaumannDrag; }",
+                     hard_sphere=kernel(h_weak), breakup=brk,
+                     write_format="binary")
+    boxcase.write_internal_U(case, L_C, N_C,
+                             lambda x, y, z: (gamma * (y - L_C[1] / 2), 0,
+                                              0))
+    return case
+
+
+def mass(ev, k):
+    return ev[f"rho_{k}"] * np.pi / 6 * ev[f"d_{k}"] ** 3
+
+
+def test_log_replay_restart_and_corruption(case_dir, foam_env):
+    case = shear_case(case_dir / "run")
+    boxcase.run_case(case)
+    ev = breakuplog.read_breakup_events(case)
+
+    # The log holds the counted break-ups, by mechanism, over several steps
+    last = stats_rows(case)[-1]                     # counts since start
+    for m, name in enumerate(("Turbulence", "Drag", "Rotation")):
+        assert np.sum(ev["mechanism"] == m) == last[f"nBreakup{name}"], name
+    assert len(ev) > 100
+    assert len(np.unique(ev["timeIndex"])) >= 3
+    assert np.sum(ev["mechanism"] == 0) > 0
+
+    # Each record: the parent's primaries, mass and momentum in the
+    # fragments, a fragment id handed out once, a stress above strength
+    assert np.all(ev["nPrimary_a"] + ev["nPrimary_b"] == ev["nPrimary_p"])
+    assert np.all((ev["nPrimary_a"] >= 1) & (ev["nPrimary_b"] >= 1))
+    m_p, m_a, m_b = mass(ev, "p"), mass(ev, "a"), mass(ev, "b")
+    assert np.allclose(m_a + m_b, m_p, rtol=1e-12, atol=0)
+    P = m_a[:, None] * ev["U_a"] + m_b[:, None] * ev["U_b"]
+    scale = sum(m * np.linalg.norm(ev[f"U_{k}"], axis=1)
+                for m, k in ((m_p, "p"), (m_a, "a"), (m_b, "b")))
+    assert np.all(np.linalg.norm(P - m_p[:, None] * ev["U_p"], axis=1)
+                  <= 1e-12 * scale)
+    assert np.all(ev["newProc"] == -2)
+    assert len(np.unique(ev["newId"])) == len(ev)
+    assert np.all(ev["ratio"] > 1)
+
+    # The run's kernel reproduces every logged break-up; a variant whose
+    # stresses are all halved breaks exactly those with stress/strength
+    # > 2 (halving is exact in floating point; the mechanism of the
+    # largest ratio stays, so do the rate's keyed draws)
+    k = 2
+    half = {"Cv": 0.5, "Ci": 0.5, "Cd": 0.5, "rotationFactor": 0.03125}
+    res = breakuplog.replay_breakups(
+        case, {"halfStress": {"stresses": half}}, check=True)
+    run_, strong = res["configurations"]
+    assert res["events"] == len(ev)
+    assert run_["reproduced"] == len(ev) and run_["breaks"] == len(ev)
+    assert run_["byMechanism"] == [int(np.sum(ev["mechanism"] == m))
+                                   for m in range(3)]
+    assert strong["breaks"] == int(np.sum(ev["ratio"] > k))
+    assert 0 < strong["breaks"] < len(ev)
+
+    # A restart from the middle write: the log cut back to it and
+    # continued gives the same records, byte for byte
+    log = breakuplog.folder(case) / "events0.bin"
+    whole = log.read_bytes()
+    again = case_dir / "restart"
+    shutil.copytree(case, again)
+    for t in sorted((p for p in again.iterdir()
+                     if p.name.replace(".", "").replace("e-", "")
+                     .isdigit()), key=lambda p: float(p.name)):
+        if float(t.name) > 2.5 / (3 * GAMMA_CRIT):
+            shutil.rmtree(t)
+    run([foam_bin("aggloPimpleFoam")], again, "log.restart")
+    assert "events after it removed" in (again / "log.restart").read_text()
+    assert (breakuplog.folder(again) / "events0.bin").read_bytes() == whole
+
+    # An altered fragment: the replay reports it, and -check fails
+    rec = bytearray(whole)
+    off = breakuplog.HEADER_BYTES + breakuplog.DTYPE.fields["U_a"][1]
+    rec[off] ^= 0x01                         # the last bit of U_a.x
+    log.write_bytes(bytes(rec))
+    with pytest.raises(CommandError):
+        breakuplog.replay_breakups(case, check=True)
+    res = breakuplog.replay_breakups(case)
+    assert res["configurations"][0]["reproduced"] == len(ev) - 1
+
+    # A corrupt mechanism code: both readers refuse the file, naming it
+    rec = bytearray(whole)
+    rec[breakuplog.HEADER_BYTES + 4] = 7
+    log.write_bytes(bytes(rec))
+    with pytest.raises(ValueError, match="mechanism 7"):
+        breakuplog.read_breakup_events(case)
+    with pytest.raises(CommandError):
+        breakuplog.replay_breakups(case)
+    assert "record 0: mechanism 7 (valid: 0-2)" in \
+        (case / "log.breakupReplay").read_text()
+    out = json.loads((breakuplog.folder(case)
+                      / "breakupReplay.json").read_text())
+    assert out["configurations"][0]["reproduced"] == len(ev) - 1
