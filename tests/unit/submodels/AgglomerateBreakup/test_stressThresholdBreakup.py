@@ -12,7 +12,7 @@ import re
 import numpy as np
 import pytest
 
-from aggloTools import boxcase
+from aggloTools import boxcase, breakuplog
 from aggloTools.cloud import cloud_positions, read_cloud, read_record
 from aggloTools.stats import read_stats
 from aggloTools.times import last_time
@@ -460,7 +460,8 @@ def many_parents(case, mode, decompose=(1, 1, 1)):
                     nPrimary=n, omega=tuple(w * axis)))
     assert len(parts) == 10164
     hs = kernel()
-    brk = BREAKUP.replace("mode erosion;", f"mode {mode};")
+    brk = BREAKUP.replace("mode erosion;", f"mode {mode};").replace(
+        "spin conserveL; }", "spin conserveL; } eventLog true;")
     boxcase.box_case(case, L=(2.2e-3, 2.2e-3, 2.1e-3), n=(11, 11, 10),
                      particles=parts, dt=1e-7, end_time=1e-7,
                      hard_sphere=hs, breakup=brk, decompose=decompose,
@@ -503,6 +504,21 @@ def test_conservation_on_ten_thousand_parents_and_two_ranks(case_dir,
     for k in ("d", "rho", "U", "omega"):
         assert np.allclose(cs[k], cp[k], rtol=1e-12, atol=0), k
     assert np.max(np.abs(xs - xp)) < 1e-12 * 2.2e-3
+
+    # The break-up logs: one record per parent, the same on 2 ranks (two
+    # files), each reproduced by the run's kernel
+    es = breakuplog.read_breakup_events(serial)
+    ep = breakuplog.read_breakup_events(par)
+    assert len(es) == len(m0) == len(ep)
+    assert len(list(breakuplog.folder(par).glob("events*.bin"))) == 2
+    for k in ("timeIndex", "mechanism", "proc", "id", "newProc", "newId",
+              "nPrimary_a", "nPrimary_b"):
+        assert np.array_equal(es[k], ep[k]), k
+    for k in ("U_a", "U_b", "omega_a", "omega_b", "d_a"):
+        assert np.allclose(es[k], ep[k], rtol=1e-12, atol=0), k
+    for c in (serial, par):
+        res = breakuplog.replay_breakups(c, check=True)
+        assert res["configurations"][0]["reproduced"] == len(m0)
 
 
 # ------------------------------------------------ stochastic rate (1.6)
