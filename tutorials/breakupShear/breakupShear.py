@@ -96,8 +96,12 @@ def build(case, series, gamma, p):
 
 
 def finished(case):
+    """The run ended and its statistics are there (a folder left with its
+    logs only is run again)."""
     log = case / "log.aggloPimpleFoam"
-    return log.is_file() and "\nEnd\n" in log.read_text()
+    stats = case / "postProcessing" / "kinematicCloudHardSphere"
+    return log.is_file() and "\nEnd\n" in log.read_text() \
+        and stats.is_dir()
 
 
 def run_one(case, series, gamma, p):

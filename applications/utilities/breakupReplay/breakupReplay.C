@@ -129,7 +129,8 @@ breakupReplayResult replay
 {
     const breakupKernel kernel
     (
-        coeffs, collision.material(), collision.structure()
+        coeffs, collision.material(), collision.structure(),
+        collision.coeffs().en()
     );
     breakupReplayResult r;
     r.name = name;

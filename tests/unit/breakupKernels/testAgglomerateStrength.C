@@ -233,7 +233,7 @@ TEST(BreakupStresses, StokesDragAndCriticalSpin)
 
     // the mechanisms off give no stress
     breakupStresses::load L{1e4, 1.5e-5, 1.2, vector(F, 0, 0),
-        vector(0, 0, 1e5)};
+        vector(0, 0, 1e5), 0};
     const FixedList<scalar, 3> all(s.stresses(L, d, 2500));
     EXPECT_EQ(all[breakupStresses::TURBULENCE], 0);
     EXPECT_GT(all[breakupStresses::DRAG], 0);

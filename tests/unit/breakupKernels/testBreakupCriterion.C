@@ -46,7 +46,8 @@ struct criterionCase
               + stresses + " }"
             ),
             material,
-            structure()
+            structure(),
+            0.5
         )
     {}
 
@@ -69,7 +70,10 @@ symmTensor shear(const scalar g)
 
 breakupStresses::load shearLoad(const scalar eps)
 {
-    return breakupStresses::load{eps, nu, rhoF, vector::zero, vector::zero};
+    return breakupStresses::load
+    {
+        eps, nu, rhoF, vector::zero, vector::zero, 0
+    };
 }
 
 } // End anonymous namespace
@@ -141,7 +145,7 @@ TEST(BreakupCriterion, V3CriticalSlipOfStokesDrag)
         const vector F(3*constant::mathematical::pi*mu*s.d*U0, 0, 0);
         const breakupCriterion::verdict v = c.criterion.check
         (
-            s, breakupStresses::load{0, nu, rhoF, F, vector::zero}
+            s, breakupStresses::load{0, nu, rhoF, F, vector::zero, 0}
         );
         EXPECT_EQ(v.breaks(), f > 1) << f;
         EXPECT_EQ(v.mechanism, label(breakupStresses::DRAG));
@@ -167,7 +171,7 @@ TEST(BreakupCriterion, LargestRatioAndPrimaries)
         breakupStresses::load
         {
             nu*sqr(10.0), nu, rhoF, vector(1e-20, 0, 0),
-            vector(0, 0, 2*wc)
+            vector(0, 0, 2*wc), 0
         }
     );
     EXPECT_EQ(v.mechanism, label(breakupStresses::ROTATION));
@@ -178,10 +182,59 @@ TEST(BreakupCriterion, LargestRatioAndPrimaries)
     const breakupCriterion::verdict vp = c.criterion.check
     (
         p, breakupStresses::load{1e9, nu, rhoF, vector(1, 0, 0),
-            vector(0, 0, 1e9)}
+            vector(0, 0, 1e9), 0}
     );
     EXPECT_FALSE(vp.breaks());
     EXPECT_EQ(vp.mechanism, -1);
+}
+
+
+TEST(BreakupCriterion, WallImpactCriticalSpeed)
+{
+    // doc/breakup.md 1.5 [rec]: C_w M v^2/2 > n_b dE_vdW(v), with the EAM
+    // bond energy of two primaries, AB16 Eq. 37, linear in v:
+    // dE = c v, c = H/(12 delta0^2) d^4 (rho^2 (1 - en^2)
+    // /(6 pMax 2d 2 rho d^3))^(1/2); so v_crit = 2 n_b c/(C_w M), with
+    // n_b = N - 1 (N <= 4) or k/2, k = pi/eps (Rumpf), eps = 1 - f(N)
+    const scalar Cw = 2;
+    criterionCase c("mechanisms (wallImpact); Cw 2;");
+    const scalar H = 1e-24, delta0 = 4e-10, pMax = 1.6e9, rho = 1050;
+    const scalar en = 0.5, d = 1e-6;
+    const scalar cE =
+        H/(12*sqr(delta0))*std::pow(d, 4)
+       *std::sqrt(sqr(rho)*(1 - sqr(en))/(6*pMax*2*d*2*rho*std::pow(d, 3)));
+    const scalar f10 = 0.41216;
+    for (const label N : {2, 3, 4, 10})
+    {
+        const scalar nb =
+            N <= 4 ? N - 1 : 0.5*constant::mathematical::pi/(1 - f10);
+        hardSphereState s = c.agglomerate(N);
+        const scalar M = N*rho*constant::mathematical::pi*std::pow(d, 3)/6;
+        const scalar vCrit = 2*nb*cE/(Cw*M);
+        EXPECT_TRUE(near(c.criterion.impactBonds(N), nb, 1e-4)) << N;
+        for (const scalar f : {0.99, 1.01})
+        {
+            const breakupCriterion::verdict v = c.criterion.check
+            (
+                s,
+                breakupStresses::load
+                {
+                    0, nu, rhoF, vector::zero, vector::zero, f*vCrit
+                }
+            );
+            EXPECT_EQ(v.breaks(), f > 1) << N << " " << f;
+            EXPECT_EQ(v.mechanism, label(breakupStresses::WALL_IMPACT));
+            EXPECT_TRUE(near(v.ratio, f, 1e-4)) << N << " " << v.ratio;
+        }
+
+        // no impact in the step: no verdict
+        const breakupCriterion::verdict v0 = c.criterion.check
+        (
+            s, breakupStresses::load{0, nu, rhoF, vector::zero,
+                vector::zero, 0}
+        );
+        EXPECT_FALSE(v0.breaks());
+    }
 }
 
 

@@ -44,6 +44,7 @@ SOL = "cellValueSourceCorrection off;"
 BRK = ("strength { rumpfPrefactor 1.125; coordination exactSmallRumpf; }"
        " stresses { mechanisms (rotation); rotationFactor 0.0625; }"
        " fragmentation { mode erosion; }")
+FRAG = "mode erosion; direction extensional; gap 1e-3; spin conserveL;"
 
 # name: (old text, new text, word the message must name)
 CASES = {
@@ -162,6 +163,21 @@ CASES = {
                          " stressThresholdCoeffs { "
                          + BRK.replace("(rotation)", "(centrifugal)")
                          + " }", "centrifugal"),
+    # the wall-impact coefficient without its mechanism, and out of range
+    "breakupCwOff": (ROT, ROT + " breakupModel stressThreshold;"
+                     " stressThresholdCoeffs { "
+                     + BRK.replace("rotationFactor 0.0625;",
+                                   "rotationFactor 0.0625; Cw 1;")
+                     + " }", "Cw"),
+    "breakupCwZero": (ROT, ROT + " breakupModel stressThreshold;"
+                      " stressThresholdCoeffs { "
+                      + BRK.replace("(rotation); rotationFactor 0.0625;",
+                                    "(wallImpact); Cw 0;")
+                      + " }", "Cw"),
+    "breakupEventLogWord": (ROT, ROT + " breakupModel stressThreshold;"
+                            " stressThresholdCoeffs { "
+                            + BRK.replace("mode erosion;", FRAG)
+                            + " eventLog maybe; }", "maybe"),
     "couplingScaleZero": (SOL, SOL + " couplingScale 0;", "couplingScale"),
     "couplingScaleNegative": (SOL, SOL + " couplingScale -6;",
                               "couplingScale"),

@@ -81,10 +81,12 @@ TEST(hardSphereParcelStage, startStep)
     const point known(0.1e-3, 0.2e-3, 0.3e-3);
     hardSphereParcelStage s;
     s.markCollided();
+    s.noteWallImpact(0.3);
     s.setKnownPosition(known);
     s.startStep(p);
     EXPECT_EQ(s.startPosition(), known);
     EXPECT_FALSE(s.collided() || s.positionKnown());
+    EXPECT_EQ(s.wallImpactSpeed(), 0);
 
     // Without one (a restart, a relocation), the particle's position
     s.startStep(p);
@@ -116,6 +118,11 @@ TEST(hardSphereParcelStage, asciiStream)
     s.markCollided();
     s.setKnownPosition(point(0.25, -1e-7, 3e5));
 
+    // the largest of the step's wall impacts is kept
+    s.noteWallImpact(0.7);
+    s.noteWallImpact(0.2);
+    EXPECT_EQ(s.wallImpactSpeed(), 0.7);
+
     OStringStream os;
     os << s;
     IStringStream is(os.str());
@@ -123,6 +130,7 @@ TEST(hardSphereParcelStage, asciiStream)
     is >> r;
 
     EXPECT_EQ(r.knownPosition(), s.knownPosition());
+    EXPECT_EQ(r.wallImpactSpeed(), 0.7);
     EXPECT_TRUE(r.positionKnown() && r.collided());
     EXPECT_FALSE(r.relocating() || r.removed() || r.formed());
 }

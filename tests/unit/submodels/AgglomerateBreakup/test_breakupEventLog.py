@@ -87,7 +87,8 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
 
     # The log holds the counted break-ups, by mechanism, over several steps
     last = stats_rows(case)[-1]                     # counts since start
-    for m, name in enumerate(("Turbulence", "Drag", "Rotation")):
+    for m, name in enumerate(("Turbulence", "Drag", "Rotation",
+                              "WallImpact")):
         assert np.sum(ev["mechanism"] == m) == last[f"nBreakup{name}"], name
     assert len(ev) > 100
     assert len(np.unique(ev["timeIndex"])) >= 3
@@ -120,7 +121,7 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     assert res["events"] == len(ev)
     assert run_["reproduced"] == len(ev) and run_["breaks"] == len(ev)
     assert run_["byMechanism"] == [int(np.sum(ev["mechanism"] == m))
-                                   for m in range(3)]
+                                   for m in range(4)]
     assert strong["breaks"] == int(np.sum(ev["ratio"] > k))
     assert 0 < strong["breaks"] < len(ev)
 
@@ -157,7 +158,7 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
         breakuplog.read_breakup_events(case)
     with pytest.raises(CommandError):
         breakuplog.replay_breakups(case)
-    assert "record 0: mechanism 7 (valid: 0-2)" in \
+    assert "record 0: mechanism 7 (valid: 0-3)" in \
         (case / "log.breakupReplay").read_text()
     out = json.loads((breakuplog.folder(case)
                       / "breakupReplay.json").read_text())

@@ -183,7 +183,7 @@ def test_critical_spin_erodes_one_primary(case_dir, foam_env, structure):
             ("Turbulence", "Drag", "Rotation")] == [0, 0, 5]
     log = (case_dir / "log.aggloPimpleFoam").read_text()
     assert re.search(r"Break-up: 5 events \(turbulence 0, drag 0, "
-                     r"rotation 5\)", log), log[-2000:]
+                     r"rotation 5, wallImpact 0\)", log), log[-2000:]
 
 
 # ------------------------------------------------- parallel and restart
@@ -570,7 +570,7 @@ def test_stochastic_rate_breaks_the_expected_share(case_dir, foam_env,
                                               0))
     boxcase.run_case(case_dir)
     m = re.search(r"Break-up: (\d+) events \(turbulence (\d+), drag 0, "
-                  r"rotation 0\), deferred by the rate (\d+)",
+                  r"rotation 0, wallImpact 0\), deferred by the rate (\d+)",
                   (case_dir / "log.aggloPimpleFoam").read_text())
     assert m, "no break-up line"
     broke, deferred = int(m.group(1)), int(m.group(3))
@@ -623,8 +623,63 @@ def test_critical_drag_slip(case_dir, foam_env, ratio):
     boxcase.run_case(case_dir)
     log = (case_dir / "log.aggloPimpleFoam").read_text()
     m = re.search(r"Break-up: (\d+) events \(turbulence 0, drag (\d+), "
-                  r"rotation 0\)", log)
+                  r"rotation 0, wallImpact 0\)", log)
     assert m, log[-2000:]
     assert int(m.group(2)) == (1 if ratio > 1 else 0)
     c = read_cloud(case_dir, last_time(case_dir))
     assert sorted(c["nPrimary"]) == ([1, n - 1] if ratio > 1 else [n])
+
+
+# ------------------------------------------------- wall impact (1.5)
+
+EN_PAIR, P_MAX = 0.97, 1.612985e9                      # boxcase.KERNEL
+
+
+def wall_impact_speed(n):
+    """doc/breakup.md 1.5 [rec]: C_w M v^2/2 = n_b dE_vdW(v), with the
+    EAM's bond energy of two primaries (AB16 Eq. 37) dE = c v; n_b = N - 1
+    for N <= 4, else k/2 with Rumpf's k = pi/eps, eps = 1 - f(N)."""
+    c = H / (12 * DELTA0 ** 2) * DP ** 4 * math.sqrt(
+        RHO_P ** 2 * (1 - EN_PAIR ** 2)
+        / (6 * P_MAX * 2 * DP * 2 * RHO_P * DP ** 3))
+    nb = n - 1 if n <= 4 else 0.5 * math.pi / (1 - packing(n))
+    M = n * RHO_P * math.pi / 6 * DP ** 3
+    return 2 * nb * c / M
+
+
+@pytest.mark.parametrize("n", [2, 10])
+@pytest.mark.parametrize("factor", [0.99, 1.01])
+def test_wall_impact_breaks_above_the_critical_speed(case_dir, foam_env, n,
+                                                     factor):
+    """The wallImpact option: an agglomerate thrown at a wall (no fluid
+    force, no spin) at 0.99 or 1.01 of its critical normal speed breaks
+    at 1.01 only, by wall impact, into a primary and the rest, keeping
+    its primaries and mass; the statistics and the log count it."""
+    da, rho = size_density(n, "CSM")
+    v = factor * wall_impact_speed(n)
+    dt = 1e-3
+    L = (1e-3, 1e-3, 1e-3)
+    part = [dict(x=(0.5e-3, da / 2 + 0.5 * v * dt, 0.5e-3), U=(0, -v, 0),
+                 d=da, rho=rho, nPrimary=n)]
+    brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
+                          "mechanisms (wallImpact); Cw 1;")
+    assert "wallImpact" in brk
+    boxcase.box_case(case_dir, L=L, n=(4, 4, 4), particles=part, dt=dt,
+                     end_time=dt, hard_sphere=kernel(), breakup=brk)
+    boxcase.run_case(case_dir)
+    t = last_time(case_dir)
+    c, x, m = state(case_dir, t)
+    stats = read_stats(case_dir)
+    log = (case_dir / "log.aggloPimpleFoam").read_text()
+    assert stats["nWall"][-1] == 1
+    if factor < 1:
+        assert list(c["nPrimary"]) == [n]
+        assert stats["nBreakupWallImpact"][-1] == 0
+        return
+    assert sorted(c["nPrimary"]) == [1, n - 1]
+    assert stats["nBreakupWallImpact"][-1] == 1
+    assert re.search(r"Break-up: 1 events \(rotation 0, wallImpact 1\)",
+                     log.replace("turbulence 0, drag 0, ", "")), log[-1500:]
+    M0 = rho * math.pi / 6 * da ** 3
+    assert m.sum() == pytest.approx(M0, rel=1e-12)
+    assert np.all(x[:, 1] > 0)                      # both off the wall

@@ -33,7 +33,8 @@ DTYPE = np.dtype(
      ("pad", "<i4"), ("dt", "<f8")]
     + _state("p")
     + [("epsilon", "<f8"), ("nu", "<f8"), ("rhoF", "<f8"),
-       ("dragForce", "<f8", 3), ("S", "<f8", 6), ("ratio", "<f8")]
+       ("dragForce", "<f8", 3), ("wallImpactSpeed", "<f8"),
+       ("S", "<f8", 6), ("ratio", "<f8")]
     + _state("a") + _state("b"))
 
 

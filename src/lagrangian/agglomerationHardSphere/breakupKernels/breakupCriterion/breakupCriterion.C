@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "breakupCriterion.H"
+#include "EAM.H"
 #include "hardSphereInput.H"
 #include "mathematicalConstants.H"
 
@@ -35,10 +36,13 @@ Foam::breakupCriterion::breakupCriterion
 (
     const dictionary& dict,
     const hardSphereMaterial& material,
-    const structureModel& structure
+    const structureModel& structure,
+    const scalar en
 )
 :
     rho0_(material.rho0()),
+    material_(material),
+    en_(en),
     strength_(dict.subDict("strength"), material, structure),
     stresses_(dict.subDict("stresses"))
 {}
@@ -59,6 +63,30 @@ Foam::scalar Foam::breakupCriterion::dissipation
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::breakupCriterion::impactBonds(const label N) const
+{
+    // One primary freed: the bonds cut (doc/breakup.md 2) for small N, half
+    // the coordination number of a surface primary otherwise [rec]
+    return N <= 4 ? scalar(N - 1) : 0.5*strength_.coordination(N);
+}
+
+
+Foam::scalar Foam::breakupCriterion::impactBondEnergy
+(
+    const label N,
+    const scalar dp,
+    const scalar vn
+) const
+{
+    return
+        impactBonds(N)
+       *agglomerationModels::EAM::vanDerWaalsEnergy
+        (
+            material_, en_, dp, rho0_, dp, rho0_, vn
+        );
+}
+
 
 Foam::breakupCriterion::verdict Foam::breakupCriterion::check
 (
@@ -85,6 +113,20 @@ Foam::breakupCriterion::verdict Foam::breakupCriterion::check
                 v.mechanism = m;
                 v.ratio = r;
             }
+        }
+    }
+    if (stresses_.on(breakupStresses::WALL_IMPACT) && L.wallImpactSpeed > 0)
+    {
+        const scalar vn = L.wallImpactSpeed;
+        const scalar M = s.mass();
+        const scalar E =
+            impactBondEnergy(s.nPrimary, s.primaryDiameter(rho0_), vn);
+        const scalar r =
+            E > 0 ? stresses_.Cw()*0.5*M*vn*vn/E : GREAT;
+        if (v.mechanism < 0 || r > v.ratio)
+        {
+            v.mechanism = breakupStresses::WALL_IMPACT;
+            v.ratio = r;
         }
     }
     return v;

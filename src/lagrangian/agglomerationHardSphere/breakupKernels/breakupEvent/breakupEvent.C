@@ -84,6 +84,7 @@ void Foam::breakupEvent::pack(char* buf) const
     put<double>(buf, pos, load.nu);
     put<double>(buf, pos, load.rhoF);
     putVector(buf, pos, load.dragForce);
+    put<double>(buf, pos, load.wallImpactSpeed);
     for (direction c = 0; c < symmTensor::nComponents; ++c)
     {
         put<double>(buf, pos, S[c]);
@@ -113,6 +114,7 @@ void Foam::breakupEvent::unpack(const char* buf)
     load.nu = get<double>(buf, pos);
     load.rhoF = get<double>(buf, pos);
     load.dragForce = getVector(buf, pos);
+    load.wallImpactSpeed = get<double>(buf, pos);
     load.omega = parent.omega;
     for (direction c = 0; c < symmTensor::nComponents; ++c)
     {
@@ -163,15 +165,17 @@ std::string Foam::breakupEvent::invalid
      || !(std::isfinite(load.nu) && load.nu > 0)
      || !(std::isfinite(load.rhoF) && load.rhoF > 0)
      || !bounded(load.dragForce, 1)
+     || !(std::isfinite(load.wallImpactSpeed) && load.wallImpactSpeed >= 0)
      || !finiteS
      || !std::isfinite(ratio)
     )
     {
         os << "load: epsilon " << load.epsilon << ", nu " << load.nu
            << ", rho " << load.rhoF << ", drag force "
-           << text(load.dragForce) << ", ratio " << ratio
-           << " (valid: finite; epsilon >= 0, nu, rho > 0, each component"
-           << " of the drag force within +-1 N)";
+           << text(load.dragForce) << ", wall impact speed "
+           << load.wallImpactSpeed << ", ratio " << ratio
+           << " (valid: finite; epsilon, wall impact speed >= 0, nu, rho"
+           << " > 0, each component of the drag force within +-1 N)";
     }
     for (const hardSphereState* p : {&parent, &a, &b})
     {

@@ -36,10 +36,11 @@ Foam::breakupKernel::breakupKernel
 (
     const dictionary& coeffs,
     const hardSphereMaterial& material,
-    const structureModel& structure
+    const structureModel& structure,
+    const scalar en
 )
 :
-    criterion_(coeffs, material, structure),
+    criterion_(coeffs, material, structure, en),
     fragmentation_
     (
         coeffs.subDict("fragmentation"),

@@ -37,6 +37,7 @@ Foam::breakupStresses::mechanismTypeNames
     { mechanismType::TURBULENCE, "turbulence" },
     { mechanismType::DRAG, "drag" },
     { mechanismType::ROTATION, "rotation" },
+    { mechanismType::WALL_IMPACT, "wallImpact" },
 });
 
 
@@ -48,10 +49,14 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
     Cv_(0),
     Ci_(0),
     Cd_(0),
-    cRot_(0)
+    cRot_(0),
+    Cw_(0)
 {
     using namespace hardSphereInput;
-    checkKeys(dict, {"mechanisms", "Cv", "Ci", "Cd", "rotationFactor"});
+    checkKeys
+    (
+        dict, {"mechanisms", "Cv", "Ci", "Cd", "rotationFactor", "Cw"}
+    );
 
     const wordList names(dict.get<wordList>("mechanisms"));
     if (names.empty())
@@ -79,12 +84,13 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
     const bool t = on_[TURBULENCE];
     const bool d = on_[DRAG];
     const bool r = on_[ROTATION];
+    const bool w = on_[WALL_IMPACT];
     const wordList need
     ({
         t ? "Cv" : "", t ? "Ci" : "", d ? "Cd" : "",
-        r ? "rotationFactor" : ""
+        r ? "rotationFactor" : "", w ? "Cw" : ""
     });
-    for (const char* key : {"Cv", "Ci", "Cd", "rotationFactor"})
+    for (const char* key : {"Cv", "Ci", "Cd", "rotationFactor", "Cw"})
     {
         if (dict.found(key) && !need.found(key))
         {
@@ -106,6 +112,10 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
     if (r)
     {
         cRot_ = getInRange(dict, "rotationFactor", open(0), open(GREAT));
+    }
+    if (w)
+    {
+        Cw_ = getInRange(dict, "Cw", open(0), open(GREAT));
     }
 }
 
@@ -206,6 +216,10 @@ void Foam::breakupStresses::write(Ostream& os) const
     if (on_[ROTATION])
     {
         os  << ", rotationFactor " << cRot_;
+    }
+    if (on_[WALL_IMPACT])
+    {
+        os  << ", Cw " << Cw_;
     }
 }
 

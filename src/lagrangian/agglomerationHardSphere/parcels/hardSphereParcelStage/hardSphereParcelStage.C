@@ -34,6 +34,7 @@ void Foam::hardSphereParcelStage::readRaw(Istream& is)
 {
     readRawScalar(is, position0_.data(), vector::nComponents);
     readRawLabel(is, &status_);
+    readRawScalar(is, &wallImpactSpeed_);
 }
 
 
@@ -41,7 +42,7 @@ void Foam::hardSphereParcelStage::readRaw(Istream& is)
 
 Foam::Istream& Foam::operator>>(Istream& is, hardSphereParcelStage& s)
 {
-    is  >> s.position0_ >> s.status_;
+    is  >> s.position0_ >> s.status_ >> s.wallImpactSpeed_;
     is.check(FUNCTION_NAME);
     return is;
 }
@@ -49,7 +50,8 @@ Foam::Istream& Foam::operator>>(Istream& is, hardSphereParcelStage& s)
 
 Foam::Ostream& Foam::operator<<(Ostream& os, const hardSphereParcelStage& s)
 {
-    os  << s.position0_ << token::SPACE << s.status_;
+    os  << s.position0_ << token::SPACE << s.status_ << token::SPACE
+        << s.wallImpactSpeed_;
     os.check(FUNCTION_NAME);
     return os;
 }

@@ -143,7 +143,8 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
     (
         checkedCoeffs(this->coeffDict()),
         kernelOf(owner).material(),
-        kernelOf(owner).structure()
+        kernelOf(owner).structure(),
+        kernelOf(owner).coeffs().en()
     ),
     log_(nullptr),
     columns_(-1, -1)
@@ -221,12 +222,13 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     label nDeferred = 0;
     for (parcelType& p : cloud)
     {
+        // Not moved by an event; moved out of a wall: from the target
         const hardSphereParcelStage& st = p.stage();
         if
         (
             !agglomerates
          || p.nPrimary() < 2
-         || !st.positionKnown()
+         || !(st.positionKnown() || st.relocating())
          || st.collided()
          || st.formed()
         )
@@ -244,6 +246,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
         L.nu = nu;
         L.rhoF = rho[celli];
         L.omega = p.omega();
+        L.wallImpactSpeed = st.wallImpactSpeed();
         L.dragForce = Zero;
         if (kernel_.criterion().stresses().on(breakupStresses::DRAG))
         {
@@ -253,8 +256,8 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
 
         const hardSphereState s
         (
-            p.stage().knownPosition(), p.U(), p.omega(), p.d(), p.rho(),
-            p.nPrimary()
+            st.relocating() ? st.relocationTarget() : st.knownPosition(),
+            p.U(), p.omega(), p.d(), p.rho(), p.nPrimary()
         );
         const breakupCriterion::verdict v = kernel_.check(s, L);
         const breakupKernel::key k
@@ -301,7 +304,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     // The new parcels' global ids (collective)
     const labelList newIds(this->ids_.assign(ids));
 
-    labelList nEvents(3, Zero);
+    labelList nEvents(breakupStresses::mechanismTypeNames.size(), Zero);
     scalar dKE = 0;
     forAll(parents, i)
     {
@@ -339,8 +342,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     reduce(dKE, sumOp<scalar>());
     reduce(nDeferred, sumOp<label>());
 
-    Info<< "    Break-up: " << (nEvents[0] + nEvents[1] + nEvents[2])
-        << " events (";
+    Info<< "    Break-up: " << sum(nEvents) << " events (";
     forAll(nEvents, m)
     {
         Info<< (m ? ", " : "")

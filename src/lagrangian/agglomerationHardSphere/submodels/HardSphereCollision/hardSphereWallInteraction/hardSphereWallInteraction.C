@@ -59,6 +59,7 @@ void Foam::hardSphereWallInteraction::impact
     const scalar eventFraction
 ) const
 {
+    p.impactSpeed = -((p.U - Uw) & nw);
     keyedRandom rnd
     (
         randomSeed_, randomStreams::wallImpact, p.origProc, p.origId,

@@ -35,7 +35,7 @@ Foam::hardSphereWallInteraction::wallParticle(ParcelType& p)
 {
     return particle
     {
-        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb()
+        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb(), 0
     };
 }
 
@@ -63,6 +63,10 @@ bool Foam::hardSphereWallInteraction::contactAtRadius
     {
         p.stage().relocateTo(xNew);
     }
+    if (result == IMPACT)
+    {
+        p.stage().noteWallImpact(wp.impactSpeed);
+    }
     return result == IMPACT;
 }
 
@@ -71,7 +75,12 @@ template<class ParcelType>
 bool Foam::hardSphereWallInteraction::hitCentre(ParcelType& p) const
 {
     particle wp(wallParticle(p));
-    return hitCentre(p.face(), wp, p.stepFraction());
+    if (hitCentre(p.face(), wp, p.stepFraction()))
+    {
+        p.stage().noteWallImpact(wp.impactSpeed);
+        return true;
+    }
+    return false;
 }
 
 
