@@ -1,0 +1,108 @@
+"""aggloTools.stages: a driver's options refused in the Allrun words with
+exit status 1; a failing command or a solver whose log lacks End raises;
+the pool runs every item, up to jobs at a time, and returns the failed
+ones; SIGINT to a driver stops its whole process tree and exits 130
+without running what follows."""
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import pytest
+
+from aggloTools import stages
+from aggloTools.runner import CommandError
+
+
+def parse(argv):
+    p = stages.Parser("t", "doc")
+    p.add_argument("-preset", default="small")
+    p.add_argument("-j", type=stages.positive("-j"), default=1)
+    return p.parse_args(argv)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["-preset"], "Allrun: -preset needs a value"),
+    (["-j", "0"], "-j '0' is not a positive number"),
+    (["-j", "x"], "-j 'x' is not a positive number"),
+    (["-bogus"], "unknown option -bogus"),
+])
+def test_refused_options(argv, words, capsys):
+    with pytest.raises(SystemExit) as e:
+        parse(argv)
+    assert e.value.code == 1
+    assert words in capsys.readouterr().err
+
+
+def test_accepted_options():
+    a = parse(["-preset", "ci", "-j", "3"])
+    assert (a.preset, a.j) == ("ci", 3)
+
+
+def test_run_logged_and_solver(tmp_path):
+    stages.run_logged([sys.executable, "-c", "print('hello')"], tmp_path,
+                      "log.hello")
+    assert (tmp_path / "log.hello").read_text() == "hello\n"
+    with pytest.raises(CommandError, match="failed"):
+        stages.run_logged([sys.executable, "-c", "raise SystemExit(3)"],
+                          tmp_path, "log.fail")
+    # a solver log without End: did not finish
+    with pytest.raises(CommandError, match="did not finish"):
+        stages.run_solver(tmp_path, [sys.executable, "-c", "print(1)"],
+                          "x", lambda c: "", 60)
+    lines = []
+    wall = stages.run_solver(
+        tmp_path, [sys.executable, "-c",
+                   "import time; time.sleep(1.2); print('End')"],
+        "x", lambda c: lines.append(c) or "p", 0.5, append=True)
+    assert 1 <= wall < 30
+    assert len(lines) >= 1            # at least one progress line
+    assert (tmp_path / "log.aggloPimpleFoam").read_text().endswith(
+        "1\nEnd\n")                   # appended to the first run's log
+
+
+def test_pool_collects_the_failures():
+    done = []
+
+    def work(i):
+        if i % 3 == 0:
+            raise CommandError("no")
+        done.append(i)
+    assert sorted(stages.pool(range(7), work, 2)) == [0, 3, 6]
+    assert sorted(done) == [1, 2, 4, 5]
+
+
+def test_sigint_stops_the_tree_and_exits_130(tmp_path):
+    marker = tmp_path / "after"
+    child = tmp_path / "child.pid"
+    driver = tmp_path / "driver.py"
+    driver.write_text(textwrap.dedent(f"""
+        import sys
+        from aggloTools import stages
+        def main():
+            stages.run_logged(["bash", "-c",
+                               "echo $$ > {child}; sleep 60 & wait"],
+                              "{tmp_path}", "log.sleep")
+            open("{marker}", "w").write("ran")
+            return 0
+        sys.exit(stages.interruptible(main))
+    """))
+    proc = subprocess.Popen([sys.executable, str(driver)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, start_new_session=True)
+    t0 = time.time()
+    while not child.exists() or not child.read_text().strip():
+        assert time.time() - t0 < 30
+        time.sleep(0.1)
+    bash = int(child.read_text())
+    os.kill(proc.pid, signal.SIGINT)      # the driver only, not its group
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, out + err
+    assert "interrupted" in err
+    assert not marker.exists()
+    time.sleep(0.5)
+    with pytest.raises(ProcessLookupError):
+        os.kill(bash, 0)
