@@ -14,18 +14,12 @@
                                   no spin, ids 0..N-1 (doc/cases.md A.1);
                                   into the processor folders of a
                                   decomposed case (no decomposePar)
-    channel.py branchClouds CASE TIME MODEL ...
-                                  the released cloud becomes one cloud per
-                                  model (agglomeration stage branch)
     channel.py seedPairs CASE CLOUD ...
                                   the seeded pairs of the smoke preset
                                   (doc/cases.md A.11) at the latest time
-    channel.py progress CASE      stage, simulated time and ETA of a run
-    channel.py settle CASE        set aside a last time folder whose write
-                                  was cut off (before a restart)
-    channel.py get preset PRESET KEY | get configuration CONFIG KEY
-                                  one value of a preset or configuration
-                                  (seededPairs, twoWay, ...)
+
+The stages are run by channelRuns.py (./Allrun), which calls
+branch_clouds, progress, preset and configuration directly.
 
 Post-processing: channelPost.py PRESET.
 
@@ -543,22 +537,8 @@ def main(argv):
         init(argv[2])
     elif cmd == "release":
         release(argv[2])
-    elif cmd == "branchClouds":
-        branch_clouds(argv[2], argv[3], argv[4:])
     elif cmd == "seedPairs":
         seed_pairs(argv[2], argv[3:])
-    elif cmd == "progress":
-        print(progress(argv[2]))
-    elif cmd == "settle":
-        times.set_aside_incomplete_times(argv[2])
-    elif (cmd == "get" and len(argv) == 5
-          and argv[2] in ("preset", "configuration")):
-        d = (preset if argv[2] == "preset" else configuration)(argv[3])
-        if argv[4] not in d:
-            sys.exit(f"channel.py get: no entry '{argv[4]}' in "
-                     f"{argv[2]} {argv[3]}; entries: " + " ".join(d))
-        v = d[argv[4]]
-        print(int(v) if isinstance(v, bool) else v)
     else:
         print(__doc__)
         return 1

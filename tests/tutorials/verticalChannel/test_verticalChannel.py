@@ -44,7 +44,7 @@ def run_smoke(tmp, np_):
     case.mkdir(parents=True)
     for name in ("0.orig", "constant", "system", "presets", "channel.py",
                  "channelPost.py", "channelPlots.py", "channelReplay.py",
-                 "channelRegime.py", "Allrun",
+                 "channelRegime.py", "channelRuns.py", "Allrun",
                  "Allclean"):
         src = TUTORIAL / name
         (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)

@@ -1,0 +1,80 @@
+"""The Python driver of the channel tutorial (channelRuns.py, behind a
+thin Allrun) writes the same files as the shell Allrun it replaced (its
+last version, commit 6c04c7b): the `smoke` preset with configurations C1
+and C2, serially and on 2 ranks, every file of runs/smoke byte for byte
+apart from the logs (time stamps, paths), the stage times and the case
+paths that the replays and the comparison record; `-post` gives the same
+report. Both drivers run in copies of today's tutorial, so only the
+driver differs (about 2 min)."""
+
+import os
+import shutil
+import subprocess
+
+import pytest
+
+from aggloTools.runner import project_dir
+
+TUT = project_dir() / "tutorials" / "verticalChannel"
+OLD = "6c04c7b"
+
+
+def old_allrun():
+    res = subprocess.run(["git", "show",
+                          f"{OLD}:tutorials/verticalChannel/Allrun"],
+                         cwd=project_dir(), capture_output=True, text=True)
+    return res.stdout if res.returncode == 0 else None
+
+
+def allrun(tut, *args):
+    return subprocess.run(["./Allrun", "-preset", "smoke", "-configs",
+                           "C1 C2", *args], cwd=tut, capture_output=True,
+                          text=True, timeout=1200,
+                          env=dict(os.environ, PWD=str(tut)))
+
+
+def files(root):
+    """Those that must be equal: all but logs and stage times."""
+    return sorted(p.relative_to(root) for p in root.rglob("*")
+                  if p.is_file() and not p.name.startswith("log.")
+                  and not p.name.startswith("done."))
+
+
+def text_without(path, tut):
+    return path.read_bytes().replace(str(tut).encode(), b"TUT")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("np_", ["1", "2"])
+def test_python_driver_writes_what_the_shell_driver_wrote(tmp_path,
+                                                          foam_env, np_):
+    script = old_allrun()
+    if script is None:
+        pytest.skip(f"n/r: commit {OLD} is not in this clone (shallow)")
+    tuts = {}
+    for name in ("old", "new"):
+        t = tmp_path / name / "verticalChannel"
+        shutil.copytree(TUT, t, ignore=shutil.ignore_patterns(
+            "runs", "__pycache__"))
+        tuts[name] = t
+    (tuts["old"] / "Allrun").write_text(script)
+    for t in tuts.values():
+        res = allrun(t, "-np", np_)
+        assert res.returncode == 0, res.stdout[-2000:] + res.stderr
+    roots = {k: t / "runs" / "smoke" for k, t in tuts.items()}
+    names = files(roots["old"])
+    assert names == files(roots["new"])
+    assert len(names) > 500
+    for r in roots.values():                    # every stage ran
+        assert (r / "C2" / "agglomeration-MAM" / "done.agglomeration") \
+            .is_file()
+    for n in names:
+        assert text_without(roots["old"] / n, tuts["old"]) == \
+            text_without(roots["new"] / n, tuts["new"]), n
+
+    for t in tuts.values():
+        res = allrun(t, "-post")
+        assert res.returncode == 0, res.stdout[-2000:] + res.stderr
+    for f in ("regression.txt", "summary.json", "replay.txt"):
+        assert text_without(roots["old"] / "report" / f, tuts["old"]) == \
+            text_without(roots["new"] / "report" / f, tuts["new"]), f

@@ -1,0 +1,253 @@
+#!/usr/bin/env python3
+"""verticalChannel: the paper's downward turbulent channel flow with
+four-way coupled 12/4 um quartz particles (doc/cases.md Part A).
+
+    ./Allrun [-preset paper|medium|small|smoke] [-configs "C1 C2 ..."]
+             [-matrix] [-np N] [-post] [-every S] [-reference]
+
+  -preset   (default small) the presets file says what each keeps
+  -configs  (default C1) configurations of the presets file:
+            C1 C2 C3 C4 (Table D.6) R80 R60 (restitution variation)
+  -matrix   all of them: C1 C2 C3 C4 R80 R60, EAM and MAM each
+  -np       MPI ranks of every solver run (default 1: serial); a stage
+            finished on another number of ranks is kept as it is
+  -post     only the post-processing of what has been run
+  -every    seconds between progress lines (default 60)
+  -reference  write the report into results/<preset>/, the committed
+            reference, instead of runs/<preset>/report/
+
+Stages, each a run of aggloPimpleFoam under runs/<preset>/:
+  unladen/                  single-phase LES from a perturbed profile
+  <config>/dispersion/      release (all particles at once, cloud
+                            "particles") and dispersion: collisions on,
+                            agglomeration off
+  <config>/agglomeration/   from the end of dispersion, counters zeroed:
+                            clouds EAM and MAM in one run (one-way
+                            coupled: both see the same LES), or
+  <config>/agglomeration-EAM/, -MAM/   one run per model (two-way)
+A stage that is interrupted continues from its last written time when
+Allrun is called again; finished stages are kept (remove runs/<preset>
+to redo). Then channelPost.py writes the report runs/<preset>/report/:
+summary.json, regression.txt (printed), plots, a pyvista picture and
+comparison.txt (against the committed reference results/<preset>/,
+which only -reference rewrites); the VTK files of
+the last time are under runs/<preset>/<config>/.../VTK (foamToVTK);
+channelReplay.py replays the agglomeration stages' collision-event logs
+(replay.json, replay.txt, alphaReplay<config><cloud>.png).
+Ctrl-C stops every run it started (exit status 130).
+Run times on the 2-core development machine: README.md.
+"""
+
+import contextlib
+import io
+import os
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from aggloTools import stages, times
+from aggloTools.runner import CommandError
+
+import channel
+
+HERE = Path(__file__).resolve().parent
+MATRIX = "C1 C2 C3 C4 R80 R60"
+
+
+def options(argv):
+    p = stages.Parser("verticalChannel", __doc__)
+    p.add_argument("-preset", default="small")
+    p.add_argument("-configs", default="C1")
+    p.add_argument("-matrix", action="store_true")
+    p.add_argument("-np", type=stages.positive("-np"), default=1)
+    p.add_argument("-post", action="store_true")
+    p.add_argument("-every", type=stages.positive("-every"), default=60)
+    p.add_argument("-reference", action="store_true")
+    a = p.parse_args(argv)
+    if a.matrix:
+        a.configs = MATRIX
+    return a
+
+
+class Channel:
+    """The stages of one call: the preset, the ranks, the progress."""
+
+    def __init__(self, a):
+        self.a = a
+        self.base = Path("runs") / a.preset
+
+    def settings(self, d, config, stage, models=()):
+        (d / "system" / "caseSettings").write_text(
+            channel.settings(self.a.preset, config, stage, tuple(models),
+                             self.a.np))
+
+    def python(self, d, suffix, *args):
+        stages.run_logged([sys.executable, HERE / "channel.py", *args],
+                          d, f"log.python.{suffix}")
+
+    def stage(self, d, stage, config, models=()):
+        """The solver run of one stage in d (serial or on np ranks),
+        decomposed first and reconstructed after on np > 1 ranks; skipped
+        when done before."""
+        np = self.a.np
+        tag = f"{d} [{stage}{' ' + ' '.join(models) if models else ''}]"
+        if (d / f"done.{stage}").is_file():
+            print(f"    {tag}: finished before, kept", flush=True)
+            return
+        self.settings(d, config, stage, models)
+        if np > 1 and not (d / "processor0").is_dir():
+            stages.run_logged(["decomposePar", "-force"], d,
+                              "log.decomposePar")
+            # decomposePar writes barycentric coordinates but copies the
+            # uniform cloudProperties that announce a legacy positions file
+            for f in d.glob("processor*/*/uniform/lagrangian/*/"
+                            "cloudProperties"):
+                text = f.read_text()
+                f.write_text(re.sub(r"geometry *positions;",
+                                    "geometry coordinates;", text))
+        # A write cut off by a kill is set aside (OpenFOAM would stop on it)
+        said = io.StringIO()
+        with contextlib.redirect_stdout(said):
+            times.set_aside_incomplete_times(d)
+        for line in said.getvalue().splitlines():
+            print(f"    {tag}: {line}", flush=True)
+        print(f"    {tag}: started ({time.strftime('%H:%M:%S')}, log: "
+              f"{d}/log.aggloPimpleFoam)", flush=True)
+        cmd = ["aggloPimpleFoam"]
+        if np > 1:
+            cmd = ["mpirun", "-n", str(np), "aggloPimpleFoam", "-parallel"]
+        try:
+            wall = stages.run_solver(d, cmd, tag, channel.progress,
+                                     self.a.every, append=True)
+        except CommandError:
+            raise CommandError(f"aggloPimpleFoam failed, see "
+                               f"{d}/log.aggloPimpleFoam") from None
+        if np > 1:
+            stages.run_logged(["reconstructPar", "-latestTime"], d,
+                              "log.reconstructPar")
+        (d / f"done.{stage}").write_text(f"{round(wall)}\n")
+        print(f"    {tag}: done in {round(wall)} s", flush=True)
+
+    def unladen(self):
+        """The single-phase LES shared by every configuration."""
+        d = self.base / "unladen"
+        if (d / "done.unladen").is_file():
+            print("    unladen: finished before, kept", flush=True)
+            return
+        if not (d / "constant" / "polyMesh").is_dir():
+            stages.fresh_case(d, {"system": "system",
+                                  "constant": "constant", "0": "0.orig"})
+            self.settings(d, "C1", "unladen")
+            stages.run_logged(["blockMesh"], d, "log.blockMesh")
+            stages.run_logged(["postProcess", "-func", "writeCellCentres",
+                               "-time", "0"], d, "log.postProcess")
+            self.python(d, "init", "init", ".")
+        self.stage(d, "unladen", "C1")
+
+    def configuration(self, c):
+        """Release, dispersion and agglomeration of one configuration."""
+        np = self.a.np
+        d = self.base / c / "dispersion"
+        if not (d / "released").is_file():
+            t = stages.branch_case(self.base / "unladen", d, np,
+                                   extra_constant=Path("constant"))
+            self.settings(d, c, "release")
+            stages.run_logged(["postProcess", "-func", "writeCellCentres",
+                               "-time", t], d, "log.postProcess")
+            # On several ranks the particles go straight into the processor
+            # folders: the fluid is decomposed first, if not copied so
+            if np > 1 and not (d / "processor0").is_dir():
+                stages.run_logged(["decomposePar", "-force"], d,
+                                  "log.decomposePar")
+            self.python(d, "release", "release", ".")
+            (d / "released").touch()
+        self.stage(d, "release", c)
+        self.stage(d, "dispersion", c)
+
+        seeded = channel.preset(self.a.preset)["seededPairs"]
+        two_way = bool(channel.configuration(c)["twoWay"])
+        for models in ((("EAM",), ("MAM",)) if two_way
+                       else (("EAM", "MAM"),)):
+            adir = self.base / c / ("agglomeration-" + models[0]
+                                    if two_way else "agglomeration")
+            if not (adir / "branched").is_file():
+                # The smoke preset's seeded pairs are added to the serial
+                # case (decomposePar then runs at the start of the stage)
+                t = stages.branch_case(d, adir, np, serial=seeded > 0,
+                                       extra_constant=Path("constant"))
+                # Each model's cloud starts from the same end-of-dispersion
+                # state; the counters (statistics state) start from zero
+                channel.branch_clouds(adir, t, models)
+                sys.stdout.flush()
+                stages.run_logged(["postProcess", "-func",
+                                   "writeCellCentres", "-time", t], adir,
+                                  "log.postProcess")
+                self.python(adir, "seedPairs", "seedPairs", ".", *models)
+                (adir / "branched").touch()
+            self.stage(adir, "agglomeration", c, models)
+            if not (adir / "VTK").is_dir():
+                with contextlib.redirect_stdout(io.StringIO()):
+                    try:
+                        stages.run_logged(
+                            ["foamToVTK", "-latestTime", "-excludePatches",
+                             "(inlet outlet front back)"], adir,
+                            "log.foamToVTK")
+                    except CommandError:
+                        pass
+
+
+def work(a):
+    configs = a.configs.split()
+    # The preset and the configurations checked before anything starts
+    try:
+        for c in configs:
+            channel.settings(a.preset, c, "unladen", (), a.np)
+    except SystemExit as e:
+        sys.stderr.write(f"{e}\n")
+        return 1
+    if not a.post:
+        print(f"verticalChannel: preset {a.preset}, configurations: "
+              f"{' '.join(configs)}, {a.np} MPI rank(s)", flush=True)
+        run = Channel(a)
+        run.base.mkdir(parents=True, exist_ok=True)
+        try:
+            run.unladen()
+        except CommandError as e:
+            print(f"    unladen: {e}", flush=True)
+            sys.stderr.write("Allrun: the unladen stage failed\n")
+            return 1
+        for c in configs:
+            try:
+                run.configuration(c)
+            except CommandError as e:
+                print(f"    {c}: {e}", flush=True)
+                sys.stderr.write(f"Allrun: configuration {c} failed\n")
+                return 1
+
+    ref = ["--reference"] if a.reference else []
+    print(flush=True)
+    status = subprocess.call([sys.executable, "channelPost.py", a.preset,
+                              *ref])
+    # The collision-event logs replayed through EAM and MAM at three e_n
+    print(flush=True)
+    if subprocess.call([sys.executable, "channelReplay.py", a.preset,
+                        *ref]):
+        status = 1
+    report = f"results/{a.preset}" if a.reference \
+        else f"runs/{a.preset}/report"
+    print()
+    print(f"Report: {HERE / report} (regression.txt, summary.json, *.png;"
+          f" comparison.txt: against the committed results/{a.preset})")
+    return status
+
+
+def main(argv):
+    os.chdir(HERE)
+    a = options(argv)
+    return stages.interruptible(lambda: work(a))
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
