@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .eventlog import HEADER_BYTES, variants_text
+from .eventlog import HEADER_BYTES, body_records, variants_text
 from .runner import foam_bin, run
 
 _STATE = [("x", "<f8", 3), ("U", "<f8", 3), ("omega", "<f8", 3),
@@ -55,12 +55,7 @@ def read_file(path):
         raise ValueError(f"{path}: not a break-up event file of this"
                          f" layout (header {head.strip()!r})")
     mechanisms = tuple(head[len(want):].split()[0].split(","))
-    body = len(data) - HEADER_BYTES
-    if body % DTYPE.itemsize:
-        raise ValueError(f"{path}: a partial record at the end (a write"
-                         " cut off; a restart of the run cuts it back)")
-    records = np.frombuffer(data, DTYPE, body // DTYPE.itemsize,
-                            HEADER_BYTES)
+    records = body_records(path, data, DTYPE)
     bad = (records["mechanism"] < 0) | \
         (records["mechanism"] >= len(mechanisms))
     if bad.any():

@@ -125,16 +125,20 @@ def read_header(path):
     return tuple(head[len(want):].split()[0].split(","))
 
 
+def body_records(path, data, dtype):
+    """The records of dtype after the header of an event file's bytes
+    (ValueError on a partial record at the end)."""
+    body = len(data) - HEADER_BYTES
+    if body % dtype.itemsize:
+        raise ValueError(f"{path}: a partial record at the end (a write"
+                         " cut off; a restart of the run cuts it back)")
+    return np.frombuffer(data, dtype, body // dtype.itemsize, HEADER_BYTES)
+
+
 def read_file(path):
     """The records of one events<rank>.bin file."""
     branches = read_header(path)
-    data = Path(path).read_bytes()
-    body = len(data) - HEADER_BYTES
-    if body % DTYPE.itemsize:
-        raise ValueError(f"{path}: a partial record at the end (a write"
-                         " cut off; a restart of the run cuts it back)")
-    records = np.frombuffer(data, DTYPE, body // DTYPE.itemsize,
-                            HEADER_BYTES)
+    records = body_records(path, Path(path).read_bytes(), DTYPE)
     check_records(records, path, len(branches))
     return records
 

@@ -11,6 +11,7 @@ stopping every process started (exit status 130, nothing after it runs).
 """
 
 import argparse
+import contextlib
 import os
 import shutil
 import signal
@@ -129,14 +130,23 @@ def branch_case(src, dst, nprocs=1, serial=False, extra_constant=None):
 
 # --------------------------------------------------------------- processes
 
-def _register(proc):
-    with _lock:
-        _children.add(proc)
-
-
-def _forget(proc):
-    with _lock:
-        _children.discard(proc)
+@contextlib.contextmanager
+def _started(cmd, cwd, log, append):
+    """cmd started in cwd with its output in cwd/log (appended with
+    append) and no input, known to the interrupt handler while it runs."""
+    cwd = Path(cwd)
+    with open(cwd / log, "a" if append else "w") as out:
+        proc = subprocess.Popen([str(c) for c in cmd], cwd=cwd, stdout=out,
+                                stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL,
+                                env=dict(os.environ, PWD=str(cwd)))
+        with _lock:
+            _children.add(proc)
+        try:
+            yield proc
+        finally:
+            with _lock:
+                _children.discard(proc)
 
 
 def run_logged(cmd, cwd, log, append=False):
@@ -144,16 +154,8 @@ def run_logged(cmd, cwd, log, append=False):
     as OpenFOAM's runApplication does; CommandError if it fails."""
     cwd = Path(cwd)
     print(f"Running {cmd[0]} on {cwd}", flush=True)
-    with open(cwd / log, "a" if append else "w") as out:
-        proc = subprocess.Popen([str(c) for c in cmd], cwd=cwd, stdout=out,
-                                stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL,
-                                env=dict(os.environ, PWD=str(cwd)))
-        _register(proc)
-        try:
-            rc = proc.wait()
-        finally:
-            _forget(proc)
+    with _started(cmd, cwd, log, append) as proc:
+        rc = proc.wait()
     if rc != 0:
         raise CommandError(f"{Path(str(cmd[0])).name} failed (rc {rc}), "
                            f"see {cwd / log}")
@@ -169,21 +171,13 @@ def run_solver(case, cmd, label, progress, every, append=False,
     case = Path(case)
     t0 = time.time()
     print(f"Running {Path(str(cmd[0])).name} on {case}", flush=True)
-    with open(case / log, "a" if append else "w") as out:
-        proc = subprocess.Popen([str(c) for c in cmd], cwd=case, stdout=out,
-                                stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL,
-                                env=dict(os.environ, PWD=str(case)))
-        _register(proc)
-        try:
-            last = t0
-            while proc.poll() is None:
-                time.sleep(0.5)
-                if time.time() - last >= every:
-                    last = time.time()
-                    print(f"    {label}: {progress(case)}", flush=True)
-        finally:
-            _forget(proc)
+    with _started(cmd, case, log, append) as proc:
+        last = t0
+        while proc.poll() is None:
+            time.sleep(0.5)
+            if time.time() - last >= every:
+                last = time.time()
+                print(f"    {label}: {progress(case)}", flush=True)
     if proc.returncode != 0:
         raise CommandError(f"{label}: {Path(str(cmd[0])).name} failed, "
                            f"see {case / log}")
