@@ -164,11 +164,5 @@ def work(a):
     return status
 
 
-def main(argv):
-    os.chdir(HERE)
-    a = options(argv)
-    return stages.interruptible(lambda: work(a))
-
-
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(stages.drive(HERE, options, work, sys.argv[1:]))

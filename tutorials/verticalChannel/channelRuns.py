@@ -40,7 +40,6 @@ Run times on the 2-core development machine: README.md.
 
 import contextlib
 import io
-import os
 import re
 import subprocess
 import sys
@@ -243,11 +242,5 @@ def work(a):
     return status
 
 
-def main(argv):
-    os.chdir(HERE)
-    a = options(argv)
-    return stages.interruptible(lambda: work(a))
-
-
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(stages.drive(HERE, options, work, sys.argv[1:]))

@@ -7,13 +7,12 @@ variants of the break-up coefficients with the breakupReplay utility.
                                             {"rumpfPrefactor": 0.5}}})
 """
 
-import json
 from pathlib import Path
 
 import numpy as np
 
-from .eventlog import HEADER_BYTES, body_records, variants_text
-from .runner import foam_bin, run
+from .eventlog import HEADER_BYTES, body_records, run_replay
+from .runner import foam_bin
 
 _STATE = [("x", "<f8", 3), ("U", "<f8", 3), ("omega", "<f8", 3),
           ("d", "<f8"), ("rho", "<f8")]
@@ -87,11 +86,4 @@ def replay_breakups(case, variants=None, cloud="kinematicCloud",
     out = Path(out or folder(case, cloud) / "breakupReplay.json")
     cmd = [foam_bin("breakupReplay"), "-case", str(case), "-cloud", cloud,
            "-json", str(out)]
-    if variants:
-        vfile = out.with_suffix(".variants")
-        vfile.write_text(variants_text(variants))
-        cmd += ["-variants", str(vfile)]
-    if check:
-        cmd.append("-check")
-    run(cmd, case, "log.breakupReplay")
-    return json.loads(out.read_text())
+    return run_replay(cmd, case, out, variants, check, "log.breakupReplay")

@@ -195,15 +195,22 @@ def replay(case, variants=None, cloud="kinematicCloud", events="all",
            cloud, "-events", events, "-json", str(out)]
     if events_out:
         cmd += ["-eventsOut", str(events_out)]
+    if base:
+        cmd += ["-base", base]
+    return run_replay(cmd, case, out, variants, check,
+                      f"log.hardSphereReplay.{events}")
+
+
+def run_replay(cmd, case, out, variants, check, log):
+    """Run a replay utility's command with the variants (written beside
+    the JSON out) and -check; returns its JSON as a dict."""
     if variants:
         vfile = out.with_suffix(".variants")
         vfile.write_text(variants_text(variants))
-        cmd += ["-variants", str(vfile)]
+        cmd = cmd + ["-variants", str(vfile)]
     if check:
-        cmd.append("-check")
-    if base:
-        cmd += ["-base", base]
-    run(cmd, case, f"log.hardSphereReplay.{events}")
+        cmd = cmd + ["-check"]
+    run(cmd, case, log)
     return json.loads(out.read_text())
 
 

@@ -253,6 +253,15 @@ def _interrupted(*_):
     os._exit(130)
 
 
+def drive(here, options, work, argv):
+    """A tutorial driver's main: in its folder here, the options parsed
+    (refused in the Allrun words), then work(options) interruptible;
+    returns the exit status."""
+    os.chdir(here)
+    a = options(argv)
+    return interruptible(lambda: work(a))
+
+
 def interruptible(main):
     """Run main() so that Ctrl-C (SIGINT) or SIGTERM stops every process
     it started (solvers, mpirun and its ranks, however deep), then the
