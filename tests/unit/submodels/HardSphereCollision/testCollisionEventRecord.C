@@ -30,20 +30,20 @@ TEST(collisionEventRecord, idOrder)
 
     // a has the higher id: the record puts b first
     ev.set({0, 9}, sa, {0, 4}, sb, false, 1, 0.25, 1.5, 7);
-    EXPECT_EQ(ev.id1, labelPair(0, 4));
-    EXPECT_EQ(ev.id2, labelPair(0, 9));
-    EXPECT_EQ(ev.s1.d, 4e-6);
-    EXPECT_EQ(ev.s2.d, 2e-6);
+    EXPECT_EQ(ev.id1(), labelPair(0, 4));
+    EXPECT_EQ(ev.id2(), labelPair(0, 9));
+    EXPECT_EQ(ev.p1.d, 4e-6);
+    EXPECT_EQ(ev.p2.d, 2e-6);
     EXPECT_EQ(ev.category, 1);
     EXPECT_EQ(ev.s, 0.25);
-    EXPECT_EQ(ev.tc, 1.5);
+    EXPECT_EQ(ev.time, 1.5);
     EXPECT_EQ(ev.celli, 7);
     EXPECT_FALSE(ev.applied);
     EXPECT_EQ(ev.outcomePtr(), nullptr);
 
     ev.set({0, 4}, sb, {0, 9}, sa, true, 1, 0.25, 1.5, 7);
-    EXPECT_EQ(ev.id1, labelPair(0, 4));
-    EXPECT_EQ(ev.s1.d, 4e-6);
+    EXPECT_EQ(ev.id1(), labelPair(0, 4));
+    EXPECT_EQ(ev.p1.d, 4e-6);
 }
 
 

@@ -97,18 +97,9 @@ Foam::fileName Foam::collisionEventLog::folder
 
 void Foam::collisionEventLog::observe(const collisionEventRecord& event)
 {
-    const Time& runTime = mesh_.time();
-    collisionEvent e;
-    e.timeIndex = runTime.timeIndex();
-    e.category = event.category;
+    collisionEvent e(event);
+    e.timeIndex = mesh_.time().timeIndex();
     e.setOutcome(event.outcomePtr());
-    e.time = runTime.value() - (1 - event.s)*runTime.deltaTValue();
-    e.proc[0] = event.id1.first();
-    e.id[0] = event.id1.second();
-    e.proc[1] = event.id2.first();
-    e.id[1] = event.id2.second();
-    e.p1 = event.s1;
-    e.p2 = event.s2;
     e.wallDistance = y_[event.celli];
     files_.append(e);
 }

@@ -31,14 +31,9 @@ License
 
 Foam::collisionEventRecord::collisionEventRecord()
 :
-    id1(-1, -1),
-    id2(-1, -1),
-    category(0),
+    collisionEvent(),
     s(0),
-    tc(0),
     celli(-1),
-    s1(),
-    s2(),
     applied(false),
     outcome()
 {}
@@ -59,13 +54,17 @@ void Foam::collisionEventRecord::set
     const label cell
 )
 {
-    id1 = aLow ? idA : idB;
-    id2 = aLow ? idB : idA;
-    s1 = aLow ? sA : sB;
-    s2 = aLow ? sB : sA;
+    const labelPair& lo = aLow ? idA : idB;
+    const labelPair& hi = aLow ? idB : idA;
+    proc[0] = lo.first();
+    id[0] = lo.second();
+    proc[1] = hi.first();
+    id[1] = hi.second();
+    p1 = aLow ? sA : sB;
+    p2 = aLow ? sB : sA;
     category = cat;
     s = sc;
-    tc = t;
+    time = t;
     celli = cell;
     applied = false;
 }
@@ -73,14 +72,14 @@ void Foam::collisionEventRecord::set
 
 Foam::point Foam::collisionEventRecord::contactPoint() const
 {
-    const vector d(s2.x - s1.x);
+    const vector d(p2.x - p1.x);
     const scalar l = mag(d);
     if (l < VSMALL)
     {
-        return s1.x;
+        return p1.x;
     }
     const vector n12(d/l);
-    return point(s1.x + 0.5*s1.d*n12);
+    return point(p1.x + 0.5*p1.d*n12);
 }
 
 

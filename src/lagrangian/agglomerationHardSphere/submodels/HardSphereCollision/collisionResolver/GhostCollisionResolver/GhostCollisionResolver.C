@@ -65,10 +65,10 @@ void Foam::GhostCollisionResolver<ParcelType>::resolve
 )
 {
     event.applied = false;
-    this->remember(pi, iLow ? event.id2 : event.id1, event.tc);
+    this->remember(pi, iLow ? event.id2() : event.id1(), event.time);
     if (pjReal)
     {
-        this->remember(*pjReal, iLow ? event.id1 : event.id2, event.tc);
+        this->remember(*pjReal, iLow ? event.id1() : event.id2(), event.time);
     }
 }
 

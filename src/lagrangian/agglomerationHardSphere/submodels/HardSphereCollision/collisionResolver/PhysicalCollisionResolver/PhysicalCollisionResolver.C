@@ -87,11 +87,11 @@ void Foam::PhysicalCollisionResolver<ParcelType>::resolve
 )
 {
     collisionOutcome& outcome = event.outcome;
-    this->kernel_.collide(event.s1, event.s2, outcome);
+    this->kernel_.collide(event.p1, event.p2, outcome);
     event.applied = true;
 
-    const hardSphereState& si = iLow ? event.s1 : event.s2;
-    const hardSphereState& sj = iLow ? event.s2 : event.s1;
+    const hardSphereState& si = iLow ? event.p1 : event.p2;
+    const hardSphereState& sj = iLow ? event.p2 : event.p1;
 
     if (outcome.agglomerates)
     {
@@ -152,7 +152,7 @@ void Foam::PhysicalCollisionResolver<ParcelType>::resolve
     {
         p.U() = st.U;
         p.omega() = st.omega;
-        this->remember(p, partner, event.tc);
+        this->remember(p, partner, event.time);
         p.stage().markCollided();
         if (separate)
         {
@@ -160,8 +160,8 @@ void Foam::PhysicalCollisionResolver<ParcelType>::resolve
         }
     };
 
-    const labelPair& idI = iLow ? event.id1 : event.id2;
-    const labelPair& idJ = iLow ? event.id2 : event.id1;
+    const labelPair idI = iLow ? event.id1() : event.id2();
+    const labelPair idJ = iLow ? event.id2() : event.id1();
     rebound(pi, newI, idJ, xiNew);
     if (pjReal)
     {
