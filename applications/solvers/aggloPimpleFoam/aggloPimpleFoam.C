@@ -94,6 +94,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    #include "restoreStartTime.H"
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"
