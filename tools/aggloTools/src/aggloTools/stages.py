@@ -170,7 +170,10 @@ def run_solver(case, cmd, label, progress, every, append=False,
     Returns the wall time in seconds."""
     case = Path(case)
     t0 = time.time()
-    print(f"Running {Path(str(cmd[0])).name} on {case}", flush=True)
+    app = Path(str(cmd[0])).name
+    if app == "mpirun":                         # mpirun -n N app -parallel
+        app = f"{Path(str(cmd[3])).name} ({cmd[2]} processes)"
+    print(f"Running {app} on {case}", flush=True)
     with _started(cmd, case, log, append) as proc:
         last = t0
         while proc.poll() is None:
