@@ -127,11 +127,7 @@ breakupReplayResult replay
     const UList<breakupEvent>& events
 )
 {
-    const breakupKernel kernel
-    (
-        coeffs, collision.material(), collision.structure(),
-        collision.coeffs().en()
-    );
+    const breakupKernel kernel(coeffs, collision);
     breakupReplayResult r;
     r.name = name;
     r.byMechanism.setSize(breakupStresses::mechanismTypeNames.size(), 0);

@@ -26,7 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "breakupKernel.H"
-#include "hardSphereMaterial.H"
+#include "hardSphereCollisionKernel.H"
 #include "keyedRandom.H"
 #include "randomStreams.H"
 
@@ -35,17 +35,19 @@ License
 Foam::breakupKernel::breakupKernel
 (
     const dictionary& coeffs,
-    const hardSphereMaterial& material,
-    const structureModel& structure,
-    const scalar en
+    const hardSphereCollisionKernel& collision
 )
 :
-    criterion_(coeffs, material, structure, en),
+    criterion_
+    (
+        coeffs, collision.material(), collision.structure(),
+        collision.coeffs().en()
+    ),
     fragmentation_
     (
         coeffs.subDict("fragmentation"),
-        structure,
-        material.rho0()
+        collision.structure(),
+        collision.material().rho0()
     ),
     rate_
     (

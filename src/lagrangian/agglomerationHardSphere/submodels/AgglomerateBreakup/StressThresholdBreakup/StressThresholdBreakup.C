@@ -142,9 +142,7 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
     kernel_
     (
         checkedCoeffs(this->coeffDict()),
-        kernelOf(owner).material(),
-        kernelOf(owner).structure(),
-        kernelOf(owner).coeffs().en()
+        kernelOf(owner)
     ),
     log_(nullptr),
     columns_(-1, -1)
