@@ -21,7 +21,8 @@ Then shearFlow.py post writes the report into runs/<preset>/report/
 regression.txt (printed at the end), alpha.png, counts.png, decay.png,
 firstContacts.png, particlesEAM.png, particlesMAM.png; shearReplay.py
 replays the runs' collision-event logs: replay.json, replay.txt,
-alphaReplay<run>.png.
+alphaReplay<run>.png; shearFirstContacts.py replays the first contacts
+spinless and splits them by partner: firstContacts.json, .txt.
 -study runs the sensitivity study of the file study instead (each variant
 an EAM and a MAM run under runs/<preset>/study/, resumable) and writes
 runs/<preset>/study/report (-reference: results/study for small,
@@ -151,11 +152,15 @@ def work(a):
     out = f"runs/{a.preset}/report" if not a.reference \
         else f"results/{a.preset}"
     status = shearFlow.main(["post", a.preset, "", out])
-    # The collision-event logs replayed through EAM and MAM at three e_n
+    # The collision-event logs replayed through EAM and MAM at three e_n,
+    # and the first contacts as logged and spinless
     print()
     try:
         import shearReplay
         shearReplay.replay(a.preset, None, out)
+        print()
+        import shearFirstContacts
+        shearFirstContacts.measure(a.preset, None, out)
     except Exception:
         traceback.print_exc()
         status = 1

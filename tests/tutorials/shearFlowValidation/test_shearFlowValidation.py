@@ -168,6 +168,60 @@ def test_ci_replay_of_the_event_logs(ci_results):
         assert a[0] <= a[1] <= a[2], (m, a)
 
 
+def test_ci_first_contacts_spinless_and_by_partner(ci_results):
+    """shearFirstContacts.py: the run's own kernel, replayed on its first
+    contacts as logged, agglomerates as often as the run counted; the
+    subsets of primary pairs and pairs with an agglomerate add up to all;
+    a ghost particle never spins, so the detect run's spinless replay is
+    its replay; and the MAM's test takes the normal relative speed only,
+    which the spins do not change, so zero spins change none of its
+    outcomes in any ensemble."""
+    _, s, tut = ci_results
+    fc = json.loads((tut / "runs/ci/report/firstContacts.json")
+                    .read_text())
+    assert sorted(fc["ensembles"]) == ["EAM", "MAM", "detect"]
+    for name, e in fc["ensembles"].items():
+        for k, by in e["kernels"].items():
+            for key in ("events", "agg"):
+                assert by["all"]["logged"][key] == \
+                    by["primaries"]["logged"][key] \
+                    + by["withAgglomerate"]["logged"][key], (name, k)
+            if k == "MAM097" or name == "detect":
+                assert by["all"]["onlyLogged"] == 0, (name, k)
+                assert by["all"]["onlySpinless"] == 0, (name, k)
+        if name == "detect":
+            assert e["withAgglomerate"] == 0
+            assert e["spinOverHalfGammaDot"]["values"] == [0, 0, 0]
+        else:
+            own = e["kernels"][f"{name}097"]["all"]["logged"]
+            assert own["events"] == s["runs"][name]["N_col_first"]
+            assert own["agg"] == s["runs"][name]["N_agg_first"]
+
+
+def test_first_contacts_spin_reaches_the_eam_only(ci_results, tmp_path):
+    """The EAM run's first contacts given spins of +-gammaDot (a
+    constructed log): zeroing them changes EAM outcomes (its Eq. 21 holds
+    the rotational energy), never the MAM's."""
+    from aggloTools import eventlog
+    tutorial_module("shearFlowValidation", "shearCase")
+    fc = tutorial_module("shearFlowValidation", "shearFirstContacts")
+    _, s, tut = ci_results
+    case = tmp_path / "EAM"
+    shutil.copytree(tut / "runs/ci/EAM", case, ignore=shutil.ignore_patterns(
+        "firstSpinless", "processor*", "[0-9]*"))
+    f = eventlog.folder(case) / "events0.bin"
+    data = f.read_bytes()
+    rec = eventlog.body_records(f, data, eventlog.DTYPE).copy()
+    rec["omega1"][:, 2] = 71.0
+    rec["omega2"][:, 2] = -71.0
+    f.write_bytes(data[:eventlog.HEADER_BYTES] + rec.tobytes())
+    e = fc.ensemble(case, 71.0)
+    eam, mam = (e["kernels"][k]["all"] for k in ("EAM097", "MAM097"))
+    assert eam["onlyLogged"] + eam["onlySpinless"] > 0
+    assert mam["onlyLogged"] == mam["onlySpinless"] == 0
+    assert e["spinOverHalfGammaDot"]["values"] == pytest.approx([2, 2, 2])
+
+
 
 # ---------------------------------------------------- the readings study
 
