@@ -27,9 +27,7 @@ License
 
 #include "vanDriestDampedDelta.H"
 #include "hardSphereInput.H"
-#include "wallFvPatch.H"
-#include "wallDistData.H"
-#include "wallPointYPlus.H"
+#include "SubList.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -49,50 +47,68 @@ namespace LESModels
 void Foam::LESModels::vanDriestDampedDelta::calcDelta()
 {
     const fvMesh& mesh = turbulenceModel_.mesh();
+    if (!walls_ || mesh.changing())
+    {
+        walls_.reset(new nearestWallFaces(mesh));
+    }
+    const nearestWallFaces& walls = walls_();
 
     const volVectorField& U = turbulenceModel_.U();
     const tmp<volScalarField> tnu = turbulenceModel_.nu();
     const volScalarField& nu = tnu();
     const tmp<volScalarField> tnut = turbulenceModel_.nut();
 
-    // Viscous length nu/u_tau at the wall faces
-    volScalarField ystar
-    (
-        IOobject
-        (
-            "ystar",
-            mesh.time().constant(),
-            mesh
-        ),
-        mesh,
-        dimensionedScalar("ystar", dimLength, GREAT)
-    );
-
-    const fvPatchList& patches = mesh.boundary();
-    volScalarField::Boundary& ystarBf = ystar.boundaryFieldRef();
-
-    forAll(patches, patchi)
+    // Viscous length y* = nu/u_tau at this rank's wall faces, u_tau^2 =
+    // (nu + nu_t)|dU/dn|; then at every wall face of all ranks
+    scalarField ystarLocal(walls.nLocal());
+    label k = 0;
+    for (const label patchi : walls.wallPatches())
     {
-        if (isA<wallFvPatch>(patches[patchi]))
-        {
-            const fvPatchVectorField& Uw = U.boundaryField()[patchi];
-            const scalarField& nuw = nu.boundaryField()[patchi];
-            const scalarField& nutw = tnut().boundaryField()[patchi];
-
-            ystarBf[patchi] =
-                nuw/sqrt((nuw + nutw)*mag(Uw.snGrad()) + VSMALL);
-        }
+        const fvPatchVectorField& Uw = U.boundaryField()[patchi];
+        const scalarField& nuw = nu.boundaryField()[patchi];
+        const scalarField& nutw = tnut().boundaryField()[patchi];
+        const scalarField ystar
+        (
+            nuw/sqrt((nuw + nutw)*mag(Uw.snGrad()) + VSMALL)
+        );
+        SubList<scalar>(ystarLocal, ystar.size(), k) = ystar;
+        k += ystar.size();
     }
+    const scalarField ystar(walls.gather(ystarLocal));
 
-    // Wall distance and the nearest wall's ystar, up to y+ = 500
-    const scalar cutOff = wallPointYPlus::yPlusCutOff;
-    wallPointYPlus::yPlusCutOff = 500;
-    wallDistData<wallPointYPlus> y(mesh, ystar);
-    wallPointYPlus::yPlusCutOff = cutOff;
+    // Damped where y+ = y/y* of the nearest wall face is below the cut-off
+    // of OpenFOAM's van Driest wave (500 here); undamped beyond
+    const scalar cutOff = 500;
+    const scalar Aplus = Aplus_;
+    auto damped = [&](const scalar geo, const scalar y, const label face)
+    {
+        if (face < 0 || !(y/ystar[face] < cutOff))
+        {
+            return geo;
+        }
+        return geo*(scalar(1) - exp(-y/ystar[face]/Aplus));
+    };
 
-    delta_ =
-        static_cast<const volScalarField&>(geometricDelta_())
-       *(scalar(1) - exp(-y/ystar/Aplus_));
+    const volScalarField& geo = geometricDelta_();
+    const volScalarField& y = walls.y();
+    scalarField& delta = delta_.primitiveFieldRef();
+    forAll(delta, celli)
+    {
+        delta[celli] = damped(geo[celli], y[celli], walls.cellFace()[celli]);
+    }
+    volScalarField::Boundary& deltaBf = delta_.boundaryFieldRef();
+    forAll(deltaBf, patchi)
+    {
+        const scalarField& geop = geo.boundaryField()[patchi];
+        const scalarField& yp = y.boundaryField()[patchi];
+        const labelList& facep = walls.patchFace(patchi);
+        scalarField dp(geop.size());
+        forAll(dp, i)
+        {
+            dp[i] = damped(geop[i], yp[i], facep[i]);
+        }
+        deltaBf[patchi] = dp;
+    }
 }
 
 
