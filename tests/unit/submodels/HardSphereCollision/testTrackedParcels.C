@@ -4,14 +4,15 @@
     step record's mass audit (hardSphereStep):
     - check: every parcel of the cloud tracked here (fatal otherwise,
       naming both numbers), one particle per parcel (fatal otherwise); the
-      largest diameter, displacement and displacement per axis against
-      hand values;
+      largest diameter, displacement and displacement per axis, the
+      particle mass and primaries (gathered as each track ends) against
+      hand values and against the sums over the cloud;
     - checkPositions: an end position off by more than 1e-12 of the
       bounding box is fatal, round-off is not;
     - finish: the end positions become the known positions except for the
       parcels to be moved or removed; the lists are empty after;
     - audit: the mass and primaries after the stage against those before
-      (auditBefore sums them over the cloud): silent within 1e-11 relative,
+      (auditBefore keeps the tracked sums): silent within 1e-11 relative,
       fatal beyond, nothing if the stage did not run; auditAfter sums the
       cloud after the stage and stops on a parcel that lost mass.
 \*---------------------------------------------------------------------------*/
@@ -79,6 +80,9 @@ TEST(trackedParcels, checkAndExtent)
     testParcel& c = *it;
     b.d_ = 30e-6;
     c.d_ = 20e-6;
+    b.mass_ = 2e-12;
+    b.nPrimary_ = 4;
+    c.mass_ = 3e-12;
     b.stage_.reset(point(1, 1, 1));
     c.stage_.reset(point(0, 0, 1));
 
@@ -88,32 +92,53 @@ TEST(trackedParcels, checkAndExtent)
     tracked.append(b, point(1, 1.6, 1));         // |dx| 0.6 along y
     tracked.append(c, point(-0.2, 0, 1.1));
 
-    scalar dMax = -1, dxMag = -1;
+    scalar dMax = -1, dxMag = -1, mass = -1;
     vector dxMax(-1, -1, -1);
-    tracked.check(cloud, dMax, dxMag, dxMax);
+    label nPrimaries = -1;
+    tracked.check(cloud, dMax, dxMag, dxMax, mass, nPrimaries);
     EXPECT_EQ(dMax, 30e-6);
     EXPECT_NEAR(dxMag, 0.6, 1e-15);
     EXPECT_NEAR(dxMax.x(), 0.3, 1e-15);
     EXPECT_NEAR(dxMax.y(), 0.6, 1e-15);
     EXPECT_NEAR(dxMax.z(), 0.1, 1e-15);
+    EXPECT_NEAR(mass, 6e-12, 1e-27);
+    EXPECT_EQ(nPrimaries, 6);
+    scalar cloudMass;
+    label cloudPrimaries;
+    hardSphereStep::globalSums(cloud, cloudMass, cloudPrimaries);
+    EXPECT_NEAR(mass, cloudMass, 1e-27);
+    EXPECT_EQ(nPrimaries, cloudPrimaries);
 
     // A fourth parcel that was not tracked here
     cloud.parcels.emplace_back();
-    const std::string missing
-    (
-        errorMessage([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
-    );
+    auto check = [&]
+    {
+        tracked.check(cloud, dMax, dxMag, dxMax, mass, nPrimaries);
+    };
+    const std::string missing(errorMessage(check));
     EXPECT_NE(missing.find("3 tracks"), std::string::npos) << missing;
     EXPECT_NE(missing.find("4 parcels"), std::string::npos) << missing;
     cloud.parcels.pop_back();
 
-    // A parcel of two particles
+    // A parcel of two particles (as its track ended)
     b.n_ = 2;
-    const std::string two
-    (
-        errorMessage([&]{ tracked.check(cloud, dMax, dxMag, dxMax); })
-    );
+    tracked.reset(3);
+    tracked.append(a, point(0.3, -0.4, 0));
+    tracked.append(b, point(1, 1.6, 1));
+    tracked.append(c, point(-0.2, 0, 1.1));
+    const std::string two(errorMessage(check));
     EXPECT_NE(two.find("nParticle = 2"), std::string::npos) << two;
+
+    // reset forgets the sums of the step before
+    b.n_ = 1;
+    tracked.reset(3);
+    tracked.append(a, point(0, 0, 0));
+    tracked.append(b, point(1, 1, 1));
+    tracked.append(c, point(0, 0, 1));
+    check();
+    EXPECT_EQ(dxMag, 0);
+    EXPECT_NEAR(mass, 6e-12, 1e-27);
+    EXPECT_EQ(nPrimaries, 6);
 }
 
 
@@ -170,8 +195,8 @@ TEST(hardSphereStep, massAudit)
     (++it)->mass_ = 2e-12;
     it->nPrimary_ = 4;
     (++it)->mass_ = 3e-12;
-    step.auditBefore(cloud);
-    EXPECT_NEAR(step.mass0, 6e-12, 1e-27);
+    step.auditBefore(6e-12, 6);
+    EXPECT_EQ(step.mass0, 6e-12);
     EXPECT_EQ(step.nPrimaries0, 6);
 
     EXPECT_EQ(errorMessage([&]{ step.audit(6e-12*(1 + 5e-12), 6); }), "");

@@ -81,11 +81,13 @@ void Foam::HardSphereCollision<CloudType>::checkParticles() const
 
 
 template<class CloudType>
-Foam::scalar Foam::HardSphereCollision<CloudType>::gather() const
+Foam::scalar Foam::HardSphereCollision<CloudType>::gather()
 {
-    scalar dMax, dxMag;
+    scalar dMax, dxMag, mass;
     vector dxMax;
-    tracked_.check(this->owner(), dMax, dxMag, dxMax);
+    label nPrimaries;
+    tracked_.check(this->owner(), dMax, dxMag, dxMax, mass, nPrimaries);
+    this->step_.auditBefore(mass, nPrimaries);
 
     return search_->checkedDistance
     (
@@ -250,10 +252,8 @@ void Foam::HardSphereCollision<CloudType>::collide()
     CloudType& cloud = this->owner();
     hardSphereStep& step = this->step_;
 
-    step.auditBefore(cloud);
-
     // The parcels in the order their tracks completed, and their end
-    // positions from the tracking
+    // positions from the tracking; the audit's sums before the stage
     const scalar distance = gather();
     const UList<parcelType*>& parcels = tracked_.parcels();
     UList<point>& x1 = tracked_.x1();

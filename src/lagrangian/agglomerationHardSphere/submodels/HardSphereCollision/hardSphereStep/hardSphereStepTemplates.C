@@ -51,13 +51,6 @@ void Foam::hardSphereStep::globalSums
 
 
 template<class CloudType>
-void Foam::hardSphereStep::auditBefore(const CloudType& cloud)
-{
-    globalSums(cloud, mass0, nPrimaries0);
-}
-
-
-template<class CloudType>
 void Foam::hardSphereStep::auditAfter(const CloudType& cloud) const
 {
     scalar mass;

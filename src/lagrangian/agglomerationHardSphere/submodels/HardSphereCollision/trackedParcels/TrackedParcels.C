@@ -38,6 +38,13 @@ void Foam::TrackedParcels<ParcelType>::reset(const label n)
     x1_.clear();
     parcels_.reserve(n);
     x1_.reserve(n);
+
+    mass_ = 0;
+    nPrimaries_ = 0;
+    dMax_ = 0;
+    dxMag_ = 0;
+    dxMax_ = Zero;
+    nParticleNotOne_ = 1;
 }
 
 
@@ -48,7 +55,9 @@ void Foam::TrackedParcels<ParcelType>::check
     const CloudType& cloud,
     scalar& dMax,
     scalar& dxMag,
-    vector& dxMax
+    vector& dxMax,
+    scalar& mass,
+    label& nPrimaries
 ) const
 {
     // Every parcel's track ends here or on another processor, once
@@ -59,31 +68,21 @@ void Foam::TrackedParcels<ParcelType>::check
             << " tracks of the step completed on this processor for "
             << cloud.size() << " parcels" << exit(FatalError);
     }
-
-    dMax = 0;
-    dxMag = 0;
-    dxMax = Zero;
-    forAll(parcels_, i)
+    if (nParticleNotOne_ != 1)
     {
-        const ParcelType& p = *parcels_[i];
-        if (p.nParticle() != 1)
-        {
-            FatalErrorInFunction
-                << "Cloud " << cloud.name() << ": a parcel has"
-                << " nParticle = " << p.nParticle() << "; the"
-                << " hard-sphere cloud needs one particle per parcel"
-                << " (parcelBasisType fixed, nParticle 1)"
-                << exit(FatalError);
-        }
-
-        dMax = max(dMax, p.d());
-        const vector dx(x1_[i] - p.stage().startPosition());
-        dxMag = max(dxMag, mag(dx));
-        dxMax = max(dxMax, cmptMag(dx));
+        FatalErrorInFunction
+            << "Cloud " << cloud.name() << ": a parcel has"
+            << " nParticle = " << nParticleNotOne_ << "; the"
+            << " hard-sphere cloud needs one particle per parcel"
+            << " (parcelBasisType fixed, nParticle 1)"
+            << exit(FatalError);
     }
-    reduce(dMax, maxOp<scalar>());
-    reduce(dxMag, maxOp<scalar>());
-    reduce(dxMax, maxOp<vector>());
+
+    dMax = returnReduce(dMax_, maxOp<scalar>());
+    dxMag = returnReduce(dxMag_, maxOp<scalar>());
+    dxMax = returnReduce(dxMax_, maxOp<vector>());
+    mass = returnReduce(mass_, sumOp<scalar>());
+    nPrimaries = returnReduce(nPrimaries_, sumOp<label>());
 }
 
 
