@@ -2,7 +2,9 @@
 system/caseSettings, what the set-up (shearFlow.py) writes and the
 post-processing (shearPost.py, shearReplay.py, shearStudy.py) reads."""
 
-from aggloTools import casesettings
+from aggloTools import casesettings, eventlog
+
+import shearTheory
 
 #: The runs of a preset: detect (ghost contacts), EAM, MAM and the optional
 #: bounce (physical rebounds without agglomeration)
@@ -30,3 +32,17 @@ def read_settings(case):
                          f"hold only {' '.join(sorted(allowed))}, not "
                          f"{' '.join(sorted(set(kc) - allowed)) or kc!r}")
     return s
+
+
+def logged_runs(runs_dir, script):
+    """The runs under runs_dir that have a collision-event log, the
+    settings of the first and van de Ven & Mason's alpha_th for them;
+    None (and a line saying so) without logs."""
+    runs = [r for r in RUNS if eventlog.folder(runs_dir / r).is_dir()]
+    if not runs:
+        print(f"{script}: no collision event logs under {runs_dir}")
+        return None
+    s = read_settings(runs_dir / runs[0])
+    a_th = float(shearTheory.alpha_th(float(s["dParticle"]),
+                                    float(s["gammaDot"])))
+    return runs, s, a_th

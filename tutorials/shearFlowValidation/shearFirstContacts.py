@@ -34,7 +34,6 @@ import numpy as np
 from aggloTools import eventlog, regression as reg
 
 import shearCase
-import shearTheory
 
 HERE = Path(__file__).resolve().parent
 KERNELS = eventlog.en_variants((0.97,), ("EAM", "MAM"))
@@ -176,16 +175,12 @@ def table(res):
 def measure(preset, runs_dir=None, out_dir=None):
     runs_dir = Path(runs_dir or HERE / "runs" / preset)
     out = Path(out_dir or HERE / "results" / preset)
-    runs = [r for r in shearCase.RUNS
-            if eventlog.folder(runs_dir / r).is_dir()]
-    if not runs:
-        print(f"shearFirstContacts.py: no collision event logs under "
-              f"{runs_dir}")
+    found = shearCase.logged_runs(runs_dir, "shearFirstContacts.py")
+    if found is None:
         return None
-    s = shearCase.read_settings(runs_dir / runs[0])
+    runs, s, a_th = found
     g = float(s["gammaDot"])
-    res = {"preset": preset, "gammaDot": g,
-           "alpha_th": float(shearTheory.alpha_th(float(s["dParticle"]), g)),
+    res = {"preset": preset, "gammaDot": g, "alpha_th": a_th,
            "ensembles": {r: ensemble(runs_dir / r, g) for r in runs}}
     out.mkdir(parents=True, exist_ok=True)
     (out / "firstContacts.json").write_text(json.dumps(res, indent=1)

@@ -22,7 +22,6 @@ from aggloTools import eventlog, regression as reg
 from aggloTools.eventlog import BASE, EN_SCAN as EN
 
 import shearCase
-import shearTheory
 
 HERE = Path(__file__).resolve().parent
 MODELS = ("EAM", "MAM")
@@ -31,14 +30,10 @@ MODELS = ("EAM", "MAM")
 def replay(preset, runs_dir=None, out_dir=None):
     runs_dir = Path(runs_dir or HERE / "runs" / preset)
     out = Path(out_dir or HERE / "results" / preset)
-    logs = [r for r in shearCase.RUNS
-            if eventlog.folder(runs_dir / r).is_dir()]
-    if not logs:
-        print(f"shearReplay.py: no collision event logs under {runs_dir}")
+    found = shearCase.logged_runs(runs_dir, "shearReplay.py")
+    if found is None:
         return None
-    s = shearCase.read_settings(runs_dir / logs[0])
-    a_th = float(shearTheory.alpha_th(float(s["dParticle"]),
-                                    float(s["gammaDot"])))
+    logs, _, a_th = found
     out.mkdir(parents=True, exist_ok=True)
     summary = {"preset": preset, "en": list(EN), "alpha_th": a_th,
                "events": "first contacts", "ensembles": {}}

@@ -659,7 +659,7 @@ def test_case_settings_reject_unknown_entries(tmp_path, foam_env, tutorial,
     (tmp_path / "system").mkdir()
     f = tmp_path / "system" / "caseSettings"
     f.write_text(text)
-    for sibling in {"shearFlow": ["shearCase", "shearTheory"]}.get(
+    for sibling in {"shearFlow": ["shearTheory", "shearCase"]}.get(
             script, []):
         tutorial_module(tutorial, sibling)   # imported by the script
     module = tutorial_module(tutorial, script)
