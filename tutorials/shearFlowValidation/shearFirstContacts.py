@@ -20,7 +20,7 @@ replay is the approach itself (and the noise of both ensembles).
 
     shearFirstContacts.py PRESET [RUNS] [OUT]
         RUNS: the folder holding the preset's runs (default runs/PRESET);
-        OUT (default results/PRESET): firstContacts.json, firstContacts.txt
+        OUT (default results/PRESET): firstContactsSpinless.json, .txt
 """
 
 import json
@@ -75,7 +75,7 @@ def outcomes(case):
     """The first contacts of a case replayed through KERNELS: the
     per-event columns (hardSphereReplay -eventsOut, beside its JSON in
     the case's log folder)."""
-    f = eventlog.folder(Path(case).resolve()) / "firstContacts"
+    f = eventlog.folder(Path(case).resolve()) / "spinlessReplay"
     eventlog.replay(case, KERNELS, events="first",
                     out=f.with_suffix(".json"),
                     events_out=f.with_suffix(".csv"))
@@ -183,10 +183,10 @@ def measure(preset, runs_dir=None, out_dir=None):
     res = {"preset": preset, "gammaDot": g, "alpha_th": a_th,
            "ensembles": {r: ensemble(runs_dir / r, g) for r in runs}}
     out.mkdir(parents=True, exist_ok=True)
-    (out / "firstContacts.json").write_text(json.dumps(res, indent=1)
-                                            + "\n")
+    (out / "firstContactsSpinless.json").write_text(
+        json.dumps(res, indent=1) + "\n")
     text = table(res)
-    (out / "firstContacts.txt").write_text(text)
+    (out / "firstContactsSpinless.txt").write_text(text)
     print(text, end="")
     return res
 

@@ -22,7 +22,7 @@ regression.txt (printed at the end), alpha.png, counts.png, decay.png,
 firstContacts.png, particlesEAM.png, particlesMAM.png; shearReplay.py
 replays the runs' collision-event logs: replay.json, replay.txt,
 alphaReplay<run>.png; shearFirstContacts.py replays the first contacts
-spinless and splits them by partner: firstContacts.json, .txt.
+spinless and splits them by partner: firstContactsSpinless.json, .txt.
 -study runs the sensitivity study of the file study instead (each variant
 an EAM and a MAM run under runs/<preset>/study/, resumable) and writes
 runs/<preset>/study/report (-reference: results/study for small,

@@ -177,7 +177,7 @@ def test_ci_first_contacts_spinless_and_by_partner(ci_results):
     which the spins do not change, so zero spins change none of its
     outcomes in any ensemble."""
     _, s, tut = ci_results
-    fc = json.loads((tut / "runs/ci/report/firstContacts.json")
+    fc = json.loads((tut / "runs/ci/report/firstContactsSpinless.json")
                     .read_text())
     assert sorted(fc["ensembles"]) == ["EAM", "MAM", "detect"]
     for name, e in fc["ensembles"].items():
