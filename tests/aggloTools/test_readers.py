@@ -49,6 +49,25 @@ def test_truncated_or_miscounted_list(tmp_path, body, words):
     assert str(f) in str(e.value)
 
 
+def test_symmetric_tensor_list(tmp_path):
+    """A volSymmTensorField's list (UPrime2Mean) is read as rows of six."""
+    f = tmp_path / "d"
+    f.write_text(HEAD + "2\n(\n(1 2 3 4 5 6)\n(7 8 9 10 11 12)\n)\n")
+    a = cloud.read_lagrangian(f)
+    assert a.shape == (2, 6) and a[1, 5] == 12 and a[0, 3] == 4
+
+
+@pytest.mark.parametrize("body", ["2\n(\n(1 2 3 4)\n(5 6)\n)\n",
+                                  "2\n(\n(1 2)\n(3 4 5 6)\n)\n"])
+def test_tuples_of_mixed_sizes(tmp_path, body):
+    """Tuples of other sizes than the first are refused, also where their
+    numbers would fill whole rows of the first's size."""
+    f = tmp_path / "d"
+    f.write_text(HEAD + body)
+    with pytest.raises(ValueError, match="numbers in 2 tuples of"):
+        cloud.read_lagrangian(f)
+
+
 def test_positions_shorter_than_their_count(tmp_path):
     cloud.write_cloud(tmp_path, [(0, 0, 0), (1, 1, 1)], 1e-5, 1000)
     f = tmp_path / "0" / "lagrangian" / "kinematicCloud" / "positions"

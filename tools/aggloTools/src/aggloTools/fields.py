@@ -38,3 +38,34 @@ def set_internal_vector_field(path, values):
     path.write_text(text)
 
 
+
+
+def plane_means(y, q, per_cell=False):
+    """Means of q (one value per cell) over the planes of equal y (cell
+    centres' wall-normal coordinate, to 1e-12), by ascending y; per_cell:
+    each cell's own plane mean instead."""
+    _, inv = np.unique(np.round(y, 12), return_inverse=True)
+    m = np.bincount(inv, q) / np.bincount(inv)
+    return m[inv] if per_cell else m
+
+
+def folded(y, q, odd=False):
+    """plane_means of q with the two halves of a channel averaged, from the
+    wall to the centre (odd: antisymmetric, as <u'v'>)."""
+    m = plane_means(y, q)
+    return 0.5 * (m + (-1 if odd else 1) * m[::-1])[:len(m) // 2]
+
+
+def channel_profiles(y, um, r):
+    """Mean and rms profiles across a channel (x streamwise, y wall-normal)
+    from the time means um (n, 3) and <u_i'u_j'> r (n, 6: xx xy xz yy yz
+    zz) of fieldAverage's UMean and UPrime2Mean, folded: U, urms, vrms,
+    wrms and uv. The fluctuations are about the plane mean, so the spread
+    of the cells' time means within a plane adds to <u_i'u_j'>."""
+    dev = um - np.stack([plane_means(y, um[:, c], True) for c in range(3)],
+                        axis=1)
+    out = {"U": folded(y, um[:, 0])}
+    for n, c, rc in (("u", 0, 0), ("v", 1, 3), ("w", 2, 5)):
+        out[f"{n}rms"] = np.sqrt(folded(y, r[:, rc] + dev[:, c]**2))
+    out["uv"] = folded(y, r[:, 1] + dev[:, 0] * dev[:, 1], odd=True)
+    return out

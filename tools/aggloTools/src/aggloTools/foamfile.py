@@ -174,8 +174,9 @@ def _skip_comments(text, pos):
 def ascii_list(text, pos=0):
     """The ASCII list that starts at text[pos:] (after white space and
     comments) as a numpy array: `N{value}` (uniform), `N(...)` or `(...)`
-    of numbers or of `(x y z)` vectors, on one line or many; comments only
-    outside the list (as OpenFOAM writes them). The numbers are split
+    of numbers or of tuples (`(x y z)` vectors, `(xx xy xz yy yz zz)`
+    symmetric tensors), on one line or many; comments only outside the
+    list (as OpenFOAM writes them). The numbers are split
     once (no per-entry parsing in Python)."""
     pos = _skip_comments(text, pos)
     m = re.compile(r"(?:(\d+)\s*)?([({])").match(text, pos)
@@ -192,16 +193,19 @@ def ascii_list(text, pos=0):
         return np.zeros(0)
     start = m.end()
     first = _skip_comments(text, start)
-    if text.startswith("(", first):         # a list of (x y z)
+    if text.startswith("(", first):         # a list of (x y z), (xx ..)
         close = re.compile(r"\)\s*\)").search(text, first)
         if close is None:
             raise ValueError("a list of vectors without its closing ')'"
                              " (a file cut off?)")
+        width = len(text[first + 1:text.index(")", first)].split())
         flat = np.array(text[start:close.end() - 1].replace("(", " ")
                         .replace(")", " ").split(), float)
-        if flat.size % 3:
-            raise ValueError(f"{flat.size} numbers in a list of vectors")
-        out = flat.reshape(-1, 3)
+        tuples = text.count("(", first, close.end() - 1)
+        if flat.size != tuples * width:
+            raise ValueError(f"{flat.size} numbers in {tuples} tuples of "
+                             f"{width} (the first tuple's size)")
+        out = flat.reshape(-1, width)
     else:
         end = text.find(")", start)
         if end < 0:
