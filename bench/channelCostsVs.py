@@ -34,9 +34,10 @@ CLOUD = ("tracking_us", "stage_us", "rest_us")
 
 
 def commit(root):
-    return subprocess.run(["git", "-C", str(root), "rev-parse", "--short",
-                           "HEAD"], capture_output=True, text=True,
-                          check=True).stdout.strip()
+    """The build's commit, with -dirty where its tree has changes."""
+    return subprocess.run(["git", "-C", str(root), "describe", "--always",
+                           "--dirty", "--abbrev=7"], capture_output=True,
+                          text=True, check=True).stdout.strip()
 
 
 def clean_env(root):

@@ -11,6 +11,7 @@ tutorial's settings over the same window.
         [--from CASE] [--spinup 20] [--batches 10] [--batch 10]
         [--variants "base null UTol1e-6 ..."] [-j 2]
         [--cost-from CASE --cost-steps 150] [--add | --rejudge]
+        [--cost-only "coarsest100 ..." --cost-from CASE]
 
 The developed flow: the latest time of --from (an unladen run of the
 preset, e.g. tutorials/verticalChannel/runs/small/unladen), else the
@@ -38,7 +39,9 @@ times --cost-steps serial steps of each variant from its latest time (and
 of base again with --add, so that the new ones have a baseline timed
 beside them). --add runs the variants that the stored study lacks (or
 holds with other settings) from its start flow and adds them;
---rejudge judges the stored batches again and rewrites the report.
+--rejudge judges the stored batches again and rewrites the report;
+--cost-only times the tutorial's settings and the COST_ONLY variants
+(GAMG's other knobs) at --cost-from and adds them to the report.
 
 Writes bench/results/channelSolverSettings.json and .txt. About 5 min of
 one core per variant at small (100 T*), two at a time with -j 2.
@@ -73,21 +76,13 @@ def _beside(name):
 
 
 channelCosts = _beside("channelCosts")
+variants = _beside("channelSolverVariants")
+VARIANTS, COST_ONLY = variants.VARIANTS, variants.COST_ONLY
+settings_of, write_fv_solution = (variants.settings_of,
+                                  variants.write_fv_solution)
 OUT = ROOT / "bench" / "runs" / "channelSolverSettings"
 RESULTS = ROOT / "bench" / "results" / "channelSolverSettings"
 APP = "aggloPimpleFoam"
-
-#: One setting of the tutorial's system/fvSolution changed per variant
-#: ("block/key": value; null: the start flow rounded instead)
-VARIANTS = {
-    "base": {},
-    "null": {},
-    "UTol1e-6": {"(U|UFinal)/tolerance": "1e-6"},
-    "pTol1e-6": {"p/tolerance": "1e-6"},
-    "pTol1e-5": {"p/tolerance": "1e-5"},
-    "pRelTol0.05": {"p/relTol": "0.05"},
-    "GaussSeidel": {"p/smoother": "GaussSeidel"},
-}
 
 AVERAGE = """
 functions
@@ -102,33 +97,6 @@ functions
     }
 }
 """
-
-
-def fv_solution(name):
-    """The tutorial's fvSolution with the variant's entries set (each in
-    the first block of its name; pFinal takes p's by $p)."""
-    text = (TUTORIAL / "system" / "fvSolution").read_text()
-    for entry, value in VARIANTS[name].items():
-        block, key = entry.rsplit("/", 1)
-        m = re.search(r'\n\s*"?' + re.escape(block) + r'"?\s*\n\s*\{', text)
-        end = text.index("}", m.end()) if m else 0
-        new, n = re.subn(rf"(\n\s*{key}\s+)[^;]+;", rf"\g<1>{value};",
-                         text[m.end():end] if m else "", count=1)
-        if n != 1:
-            sys.exit(f"channelSolverSettings: no entry {entry} in "
-                     f"{TUTORIAL / 'system' / 'fvSolution'}")
-        text = text[:m.end()] + new + text[end:]
-    return text
-
-
-def settings_of(name):
-    """The variant's solvers and PIMPLE dictionaries, as parsed."""
-    d = foamfile.parse_dict(fv_solution(name))
-    return {k: d[k] for k in ("solvers", "PIMPLE")}
-
-
-def write_fv_solution(case, name):
-    (case / "system" / "fvSolution").write_text(fv_solution(name))
 
 
 def set_stage(case, pname, steps):
@@ -328,6 +296,15 @@ def report(res):
                      f" s/step ({c['step_s'] / cost['base']['step_s']:.3f}"
                      f" of base), it p/pFinal/U {c['itP']:.1f}/"
                      f"{c['itPFinal']:.1f}/{c['itU']:.1f}")
+    co = res.get("costOnly", {})
+    for name, c in co.items():
+        if name not in ("settings", "steps"):
+            tol = co["settings"]["base"]["solvers"]["p"]["tolerance"]
+            lines.append(
+                f"cost only, {res['costCase']}, against the tutorial's "
+                f"(p tolerance {tol}): {name:<14} "
+                f"{c['step_s'] / co['base']['step_s']:.3f}, it p/pFinal "
+                f"{c['itP']:.1f}/{c['itPFinal']:.1f}")
     return "\n".join(lines) + "\n"
 
 
@@ -357,6 +334,7 @@ def main(argv=None):
     ap.add_argument("--cost-steps", type=int, default=150)
     ap.add_argument("--add", action="store_true")
     ap.add_argument("--rejudge", action="store_true")
+    ap.add_argument("--cost-only")
     a = ap.parse_args(argv)
     names = a.variants.split()
     unknown = [n for n in names if n not in VARIANTS]
@@ -364,6 +342,18 @@ def main(argv=None):
         sys.exit(f"channelSolverSettings: variants {unknown} unknown or base"
                  f" missing (valid: {' '.join(VARIANTS)}), or --batches "
                  f"{a.batches} outside 3-31")
+    if a.cost_only is not None:
+        bad = [n for n in a.cost_only.split() if n not in COST_ONLY]
+        if bad or not a.cost_from:
+            sys.exit(f"channelSolverSettings --cost-only: {bad} unknown "
+                     f"(valid: {' '.join(COST_ONLY)}) or no --cost-from")
+        res = json.loads(RESULTS.with_suffix(".json").read_text())
+        res["costOnly"] = {"settings": {}, "steps": a.cost_steps}
+        for n in ["base"] + a.cost_only.split():
+            res["costOnly"][n] = cost(n, Path(a.cost_from).resolve(),
+                                      a.cost_steps, a.cost_preset)
+            res["costOnly"]["settings"][n] = settings_of(n)
+        return write(res)
     if a.rejudge:
         res = json.loads(RESULTS.with_suffix(".json").read_text())
         for v in res["variants"].values():

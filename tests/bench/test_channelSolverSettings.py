@@ -1,6 +1,5 @@
 """The solver-settings study of the channel (bench/channelSolverSettings.py):
-its base is the tutorial's fvSolution, a variant changes its own entry,
-and a batch's values (rms with the plane variance of the time means,
+a batch's values (rms with the plane variance of the time means,
 u_tau from the mean driving gradient, iterations, step time) follow hand
 values."""
 
@@ -10,50 +9,22 @@ import math
 import numpy as np
 import pytest
 
-from aggloTools import foamfile
 from aggloTools.runner import project_dir
 
 ROOT = project_dir()
 
 
-@pytest.fixture(scope="module")
-def study():
-    path = ROOT / "bench" / "channelSolverSettings.py"
-    spec = importlib.util.spec_from_file_location("channelSolverSettings",
-                                                  path)
+def bench_module(name):
+    spec = importlib.util.spec_from_file_location(
+        name, ROOT / "bench" / f"{name}.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
 
 
-def test_base_is_the_tutorial_fvSolution(study, tmp_path):
-    """base writes the tutorial's fvSolution as it is; a variant changes
-    its own entry only (pFinal follows p's tolerance through $p)."""
-    (tmp_path / "system").mkdir()
-    study.write_fv_solution(tmp_path, "base")
-    tutorial = study.TUTORIAL / "system" / "fvSolution"
-    assert (tmp_path / "system" / "fvSolution").read_bytes() == \
-        tutorial.read_bytes()
-    theirs = foamfile.read_dict(tutorial)
-    for name, entry, value in (("pTol1e-6", ("p", "tolerance"), 1e-6),
-                               ("UTol1e-6", ("(U|UFinal)", "tolerance"),
-                                1e-6),
-                               ("GaussSeidel", ("p", "smoother"),
-                                "GaussSeidel")):
-        study.write_fv_solution(tmp_path, name)
-        ours = foamfile.read_dict(tmp_path / "system" / "fvSolution")
-        assert ours["solvers"][entry[0]][entry[1]] == value
-        ours["solvers"][entry[0]][entry[1]] = \
-            theirs["solvers"][entry[0]][entry[1]]
-        assert ours == theirs
-        assert study.settings_of(name)["solvers"][entry[0]][entry[1]] \
-            == value
-
-
-def test_unknown_entry_is_refused(study, monkeypatch):
-    monkeypatch.setitem(study.VARIANTS, "bad", {"p/tolerence": "1e-6"})
-    with pytest.raises(SystemExit, match="no entry p/tolerence"):
-        study.fv_solution("bad")
+@pytest.fixture(scope="module")
+def study():
+    return bench_module("channelSolverSettings")
 
 
 def test_rms_holds_the_plane_variance_of_the_means(study, tmp_path):

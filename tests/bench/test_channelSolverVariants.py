@@ -1,0 +1,65 @@
+"""The variants of the channel's solver settings
+(bench/channelSolverVariants.py): base is the tutorial's fvSolution as it
+is, a variant changes its own entries only, and an entry that is not
+there is refused."""
+
+import importlib.util
+
+import pytest
+
+from aggloTools import foamfile
+from aggloTools.runner import project_dir
+
+ROOT = project_dir()
+
+
+@pytest.fixture(scope="module")
+def variants():
+    spec = importlib.util.spec_from_file_location(
+        "channelSolverVariants", ROOT / "bench" / "channelSolverVariants.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_base_is_the_tutorial_fvSolution(variants, tmp_path):
+    """base writes the tutorial's fvSolution as it is; a variant changes
+    its own entry only (pFinal follows p's tolerance through $p)."""
+    (tmp_path / "system").mkdir()
+    variants.write_fv_solution(tmp_path, "base")
+    tutorial = variants.TUTORIAL / "system" / "fvSolution"
+    assert (tmp_path / "system" / "fvSolution").read_bytes() == \
+        tutorial.read_bytes()
+    theirs = foamfile.read_dict(tutorial)
+    for name, entry, value in (("pTol1e-6", ("p", "tolerance"), 1e-6),
+                               ("UTol1e-6", ("(U|UFinal)", "tolerance"),
+                                1e-6),
+                               ("GaussSeidel", ("p", "smoother"),
+                                "GaussSeidel")):
+        variants.write_fv_solution(tmp_path, name)
+        ours = foamfile.read_dict(tmp_path / "system" / "fvSolution")
+        assert ours["solvers"][entry[0]][entry[1]] == value
+        ours["solvers"][entry[0]][entry[1]] = \
+            theirs["solvers"][entry[0]][entry[1]]
+        assert ours == theirs
+        assert variants.settings_of(name)["solvers"][entry[0]][entry[1]] \
+            == value
+
+
+def test_unknown_entry_is_refused(variants, monkeypatch):
+    monkeypatch.setitem(variants.VARIANTS, "bad", {"p/tolerence": "1e-6"})
+    with pytest.raises(SystemExit, match="no entry p/tolerence"):
+        variants.fv_solution("bad")
+
+
+def test_added_and_removed_entries(variants, tmp_path):
+    """PCG: the solver set, the smoother removed, a preconditioner added;
+    nothing else changes."""
+    theirs = foamfile.read_dict(variants.TUTORIAL / "system" / "fvSolution")
+    ours = variants.settings_of("PCG")
+    p = dict(theirs["solvers"]["p"], solver="PCG", preconditioner="DIC")
+    del p["smoother"]
+    assert ours["solvers"]["p"] == p
+    assert ours["PIMPLE"] == theirs["PIMPLE"]
+    assert variants.settings_of("coarsest100")["solvers"]["p"][
+        "nCellsInCoarsestLevel"] == 100
