@@ -309,10 +309,6 @@ def report(res):
 
 
 def write(res):
-    write(res)
-
-
-def write(res):
     RESULTS.parent.mkdir(parents=True, exist_ok=True)
     RESULTS.with_suffix(".json").write_text(json.dumps(res, indent=1))
     text = report(res)
