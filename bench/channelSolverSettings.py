@@ -12,6 +12,7 @@ tutorial's settings over the same window.
         [--variants "base null UTol1e-6 ..."] [-j 2]
         [--cost-from CASE --cost-steps 150] [--add | --rejudge]
         [--cost-only "coarsest100 ..." --cost-from CASE]
+        [--results channelSolverSettings]
 
 The developed flow: the latest time of --from (an unladen run of the
 preset, e.g. tutorials/verticalChannel/runs/small/unladen), else the
@@ -42,6 +43,8 @@ holds with other settings) from its start flow and adds them;
 --rejudge judges the stored batches again and rewrites the report;
 --cost-only times the tutorial's settings and the COST_ONLY variants
 (GAMG's other knobs) at --cost-from and adds them to the report.
+--results NAME: the report's name under bench/results (a later study
+against changed tutorial settings beside an earlier one).
 
 Writes bench/results/channelSolverSettings.json and .txt. About 5 min of
 one core per variant at small (100 T*), two at a time with -j 2.
@@ -81,7 +84,7 @@ VARIANTS, COST_ONLY = variants.VARIANTS, variants.COST_ONLY
 settings_of, write_fv_solution = (variants.settings_of,
                                   variants.write_fv_solution)
 OUT = ROOT / "bench" / "runs" / "channelSolverSettings"
-RESULTS = ROOT / "bench" / "results" / "channelSolverSettings"
+RESULTS = {"path": ROOT / "bench" / "results" / "channelSolverSettings"}
 APP = "aggloPimpleFoam"
 
 AVERAGE = """
@@ -309,10 +312,11 @@ def report(res):
 
 
 def write(res):
-    RESULTS.parent.mkdir(parents=True, exist_ok=True)
-    RESULTS.with_suffix(".json").write_text(json.dumps(res, indent=1))
+    out = RESULTS["path"]
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.with_suffix(".json").write_text(json.dumps(res, indent=1))
     text = report(res)
-    RESULTS.with_suffix(".txt").write_text(text)
+    out.with_suffix(".txt").write_text(text)
     print(text, end="")
 
 
@@ -331,7 +335,9 @@ def main(argv=None):
     ap.add_argument("--add", action="store_true")
     ap.add_argument("--rejudge", action="store_true")
     ap.add_argument("--cost-only")
+    ap.add_argument("--results", default="channelSolverSettings")
     a = ap.parse_args(argv)
+    RESULTS["path"] = RESULTS["path"].with_name(a.results)
     names = a.variants.split()
     unknown = [n for n in names if n not in VARIANTS]
     if unknown or "base" not in names or not 3 <= a.batches <= 31:
@@ -339,11 +345,12 @@ def main(argv=None):
                  f" missing (valid: {' '.join(VARIANTS)}), or --batches "
                  f"{a.batches} outside 3-31")
     if a.cost_only is not None:
-        bad = [n for n in a.cost_only.split() if n not in COST_ONLY]
+        valid = VARIANTS | COST_ONLY
+        bad = [n for n in a.cost_only.split() if n not in valid]
         if bad or not a.cost_from:
             sys.exit(f"channelSolverSettings --cost-only: {bad} unknown "
-                     f"(valid: {' '.join(COST_ONLY)}) or no --cost-from")
-        res = json.loads(RESULTS.with_suffix(".json").read_text())
+                     f"(valid: {' '.join(valid)}) or no --cost-from")
+        res = json.loads(RESULTS["path"].with_suffix(".json").read_text())
         res["costOnly"] = {"settings": {}, "steps": a.cost_steps}
         for n in ["base"] + a.cost_only.split():
             res["costOnly"][n] = cost(n, Path(a.cost_from).resolve(),
@@ -351,7 +358,7 @@ def main(argv=None):
             res["costOnly"]["settings"][n] = settings_of(n)
         return write(res)
     if a.rejudge:
-        res = json.loads(RESULTS.with_suffix(".json").read_text())
+        res = json.loads(RESULTS["path"].with_suffix(".json").read_text())
         for v in res["variants"].values():
             v["judged"] = judge(res["variants"]["base"]["batches"],
                                 v["batches"])
@@ -360,7 +367,7 @@ def main(argv=None):
     OUT.mkdir(parents=True, exist_ok=True)
     old = {}
     if a.add:
-        old = json.loads(RESULTS.with_suffix(".json").read_text())
+        old = json.loads(RESULTS["path"].with_suffix(".json").read_text())
         same = {k: old[k] == getattr(a, k)
                 for k in ("preset", "batches", "batch")}
         if not all(same.values()) or not (OUT / "start").is_dir():

@@ -21,13 +21,13 @@ VARIANTS = {
     "pTol1e-5": {"p/tolerance": "1e-5"},
     "pRelTol0.05": {"p/relTol": "0.05"},
     "GaussSeidel": {"p/smoother": "GaussSeidel"},
+    "mergeLevels2": {"p/+mergeLevels": "2"},
 }
 
 #: Variants only timed (--cost-only): GAMG's other knobs and PCG
 COST_ONLY = {
     "coarsest100": {"p/+nCellsInCoarsestLevel": "100"},
     "DICGaussSeidel": {"p/smoother": "DICGaussSeidel"},
-    "mergeLevels2": {"p/+mergeLevels": "2"},
     "finestSweeps1": {"p/+nFinestSweeps": "1"},
     "PCG": {"p/solver": "PCG", "p/smoother": None,
             "p/+preconditioner": "DIC"},
