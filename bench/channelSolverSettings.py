@@ -62,7 +62,7 @@ from pathlib import Path
 
 import numpy as np
 
-from aggloTools import batches, fields, foamfile, times
+from aggloTools import batches, fields, foamfile, stages, times
 from aggloTools.runner import project_dir, run, tutorial_module
 
 ROOT = project_dir()
@@ -119,15 +119,7 @@ def tstar(case, pname):
 
 def branch(src, dst):
     """dst: mesh, system, constant files and the latest time of src."""
-    if dst.exists():
-        shutil.rmtree(dst)
-    t = times.time_dirs(src)[-1].name
-    shutil.copytree(src / "constant", dst / "constant",
-                    ignore=shutil.ignore_patterns("processor*"))
-    shutil.copytree(src / "system", dst / "system")
-    shutil.copytree(src / t, dst / t,
-                    ignore=shutil.ignore_patterns("functionObjects"))
-    return t
+    return stages.branch_case(src, dst, extra_constant=src / "constant")
 
 
 def solve(case, log):
@@ -200,13 +192,19 @@ def batch_values(case, t, log, y, p):
     r = fields.read_internal(case / t / "UPrime2Mean")
     prof = {k: (v / (ub**2 if k == "uv" else ub)).tolist() for k, v in
             fields.channel_profiles(y, um, r).items()}
-    dt = np.diff([0.0] + [s[0] for s in steps])
     return {"uTauByUb": math.sqrt(max(g.mean(), 0) * p["delta"]) / ub,
-            "step_s": float(dt[1:-1].mean()), "steps": len(steps),
+            **step_stats(steps), "profiles": prof}
+
+
+def step_stats(steps):
+    """Mean step time (the first and the last, with start-up and write,
+    left out), the number of steps and the mean iterations (p, pFinal,
+    U's components summed) of log_steps' steps."""
+    dt = np.diff([0.0] + [s[0] for s in steps])
+    return {"step_s": float(dt[1:-1].mean()), "steps": len(steps),
             "itP": float(np.mean([s[2][0] for s in steps])),
             "itPFinal": float(np.mean([s[2][-1] for s in steps])),
-            "itU": float(np.mean([sum(s[3]) for s in steps])),
-            "profiles": prof}
+            "itU": float(np.mean([sum(s[3]) for s in steps]))}
 
 
 def run_variant(name, start, a):
@@ -240,12 +238,7 @@ def cost(name, src, steps, pname):
     write_fv_solution(case, name)
     set_stage(case, pname, steps)
     solve(case, "log.cost")
-    st = log_steps((case / "log.cost").read_text())
-    d = np.diff([0.0] + [s[0] for s in st])[1:-1]
-    return {"step_s": float(d.mean()), "steps": len(st),
-            "itP": float(np.mean([s[2][0] for s in st])),
-            "itPFinal": float(np.mean([s[2][-1] for s in st])),
-            "itU": float(np.mean([sum(s[3]) for s in st]))}
+    return step_stats(log_steps((case / "log.cost").read_text()))
 
 
 # --------------------------------------------------------------- judging
