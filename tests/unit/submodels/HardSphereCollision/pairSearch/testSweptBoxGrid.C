@@ -1,11 +1,14 @@
 /*---------------------------------------------------------------------------*\
     Unit tests of the broad phase of the pair search (sweptBoxGrid): the
-    overlapping pairs of swept boxes found through the hashed grid are
+    grid keeps each box in single precision rounded outward (each bound
+    the float next to it outward: it holds the exact box), and the
+    overlapping pairs of those boxes found through the hashed grid are
     exactly those of the O(N^2) oracle (every pair, once, real-real and
     real-image, never image-image) on random clouds: uniform, clustered at
     a wall, polydisperse, with images, with a particle moving many bins in
     a step, with bins much smaller and much larger than the boxes; touching
-    boxes count (closed boxes).
+    boxes count (closed boxes); every pair of the exact boxes is among
+    them, and boxes a rounding apart are paired.
 \*---------------------------------------------------------------------------*/
 
 #include "sweptBoxGrid.H"
@@ -51,8 +54,9 @@ List<boundBox> cloud
 }
 
 
-//- The oracle: every overlapping pair with a real first member
-pairSet bruteForce(const List<boundBox>& boxes, const label nReal)
+//- The exact pairs: every overlapping pair of the double-precision boxes
+//  with a real first member
+pairSet exactPairs(const List<boundBox>& boxes, const label nReal)
 {
     pairSet s;
     for (label a = 0; a < nReal; ++a)
@@ -60,6 +64,38 @@ pairSet bruteForce(const List<boundBox>& boxes, const label nReal)
         for (label b = a + 1; b < boxes.size(); ++b)
         {
             if (sweptBoxGrid::overlap(boxes[a], boxes[b]))
+            {
+                s.insert({a, b});
+            }
+        }
+    }
+    return s;
+}
+
+
+//- The boxes as the grid keeps them
+List<sweptBoxGrid::box> rounded(const List<boundBox>& boxes)
+{
+    List<sweptBoxGrid::box> r(boxes.size());
+    forAll(boxes, i)
+    {
+        r[i] = sweptBoxGrid::rounded(boxes[i]);
+    }
+    return r;
+}
+
+
+//- The oracle: every overlapping pair of the rounded boxes with a real
+//  first member
+pairSet bruteForce(const List<boundBox>& boxes, const label nReal)
+{
+    const List<sweptBoxGrid::box> r(rounded(boxes));
+    pairSet s;
+    for (label a = 0; a < nReal; ++a)
+    {
+        for (label b = a + 1; b < r.size(); ++b)
+        {
+            if (sweptBoxGrid::overlap(r[a], r[b]))
             {
                 s.insert({a, b});
             }
@@ -80,8 +116,7 @@ pairSet gridPairs
 )
 {
     sweptBoxGrid grid;
-    List<boundBox> copy(boxes);
-    grid.build(std::move(copy), nReal, spacing);
+    grid.build(rounded(boxes), nReal, spacing);
     pairSet s;
     nVisits = 0;
     nBad = 0;
@@ -112,6 +147,12 @@ void expectOracle
     EXPECT_EQ(nBad, 0);
     EXPECT_EQ(nVisits, label(found.size())) << "duplicate pairs";
     EXPECT_EQ(found, expected);
+
+    // Every exact pair is found
+    for (const auto& p : exactPairs(boxes, nReal))
+    {
+        EXPECT_EQ(found.count(p), 1u) << p.first << ' ' << p.second;
+    }
 }
 
 } // End anonymous namespace
@@ -214,8 +255,7 @@ TEST(SweptBoxGrid, ShearFlowBoxesGetLongBins)
 
     // Twice the mean extent along each axis: long bins along the flow
     sweptBoxGrid grid;
-    List<boundBox> copy(boxes);
-    grid.build(std::move(copy), boxes.size(), 0);
+    grid.build(rounded(boxes), boxes.size(), 0);
     vector mean(Zero);
     for (const boundBox& b : boxes)
     {
@@ -223,7 +263,10 @@ TEST(SweptBoxGrid, ShearFlowBoxesGetLongBins)
     }
     for (direction c = 0; c < 3; ++c)
     {
-        EXPECT_NEAR(grid.spacing()[c], 2*mean[c], 1e-12);
+        // Each rounded bound moves by at most a float's step, 2^-23 at
+        // the coordinates here (below 2): spans up to 2^-22 wider
+        EXPECT_NEAR(grid.spacing()[c], 2*mean[c], 2*std::ldexp(1.0, -22));
+        EXPECT_GE(grid.spacing()[c], 2*mean[c]);
     }
     EXPECT_GT(grid.spacing().x(), 5*grid.spacing().y());
 }
@@ -258,6 +301,72 @@ TEST(SweptBoxGrid, EmptyAndSingle)
     EXPECT_TRUE(gridPairs(List<boundBox>(), 0, 0, nVisits, nBad).empty());
     List<boundBox> one(1, boundBox(point::zero, point::one));
     EXPECT_TRUE(gridPairs(one, 1, 0, nVisits, nBad).empty());
+}
+
+
+TEST(SweptBoxGrid, RoundedBoxHoldsTheExactOneWithinAFloat)
+{
+    std::mt19937 gen(8);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (label n = 0; n < 10000; ++n)
+    {
+        const point x(u(gen), 0.1*u(gen), 1e-3*u(gen));
+        const boundBox b(x, x + vector(1e-5, 2e-6, 1e-7)*(1 + u(gen)));
+        const sweptBoxGrid::box r(sweptBoxGrid::rounded(b));
+        for (direction c = 0; c < 3; ++c)
+        {
+            // Outward, and the next float inward would not hold it
+            EXPECT_LE(double(r.min[c]), b.min()[c]);
+            EXPECT_GE(double(r.max[c]), b.max()[c]);
+            const float inMin = std::nextafter(r.min[c], HUGE_VALF);
+            const float inMax = std::nextafter(r.max[c], -HUGE_VALF);
+            EXPECT_GT(double(inMin), b.min()[c]);
+            EXPECT_LT(double(inMax), b.max()[c]);
+        }
+    }
+
+    // A bound that is a float stays as it is
+    const boundBox exact(point(0.5, -0.25, 0), point(0.75, 1, 2));
+    const sweptBoxGrid::box r(sweptBoxGrid::rounded(exact));
+    EXPECT_EQ(r.min[0], 0.5f);
+    EXPECT_EQ(r.min[1], -0.25f);
+    EXPECT_EQ(r.max[2], 2.0f);
+}
+
+
+TEST(SweptBoxGrid, BoxesARoundingApartArePaired)
+{
+    // A gap of 1e-12 at 0.3 (a float's step there is 3e-8): apart in
+    // double precision, touching once rounded
+    List<boundBox> boxes(2);
+    boxes[0] = boundBox(point(0.1, 0.1, 0.1), point(0.3, 0.2, 0.2));
+    boxes[1] = boundBox(point(0.3 + 1e-12, 0.1, 0.1), point(0.5, 0.2, 0.2));
+    EXPECT_TRUE(exactPairs(boxes, 2).empty());
+    const pairSet expected({{0, 1}});
+    EXPECT_EQ(bruteForce(boxes, 2), expected);
+    expectOracle(boxes, 2);
+
+    // A gap of 1e-6 stays a gap
+    boxes[1] = boundBox(point(0.3 + 1e-6, 0.1, 0.1), point(0.5, 0.2, 0.2));
+    EXPECT_TRUE(bruteForce(boxes, 2).empty());
+    expectOracle(boxes, 2);
+}
+
+
+TEST(SweptBoxGrid, LargeBoxesInManyBinsOfABucket)
+{
+    // Three boxes of 20^3 bins each: 24,000 insertions in 32,768 buckets,
+    // so that many bins of one box share a bucket (with each other and
+    // with the other boxes' bins); each overlapping pair is still
+    // reported once
+    List<boundBox> boxes(3);
+    boxes[0] = boundBox(point(0, 0, 0), point(0.2, 0.2, 0.2));
+    boxes[1] = boundBox(point(0.1, 0.1, 0.1), point(0.3, 0.3, 0.3));
+    boxes[2] = boundBox(point(0.25, 0, 0), point(0.45, 0.2, 0.2));
+    const pairSet expected({{0, 1}, {1, 2}});
+    EXPECT_EQ(bruteForce(boxes, 3), expected);
+    expectOracle(boxes, 3, 0.01);
+    expectOracle(boxes, 2, 0.01);
 }
 
 

@@ -121,16 +121,21 @@ void Foam::BruteForcePairSearch<ParcelType>::search
 
     // Boxes of all partners, and the image shifts that can matter: boxes
     // that overlap have end positions within D_i + D_j <= 2 D_max
-    List<boundBox> box(partner.size());
+    // (tested as the grid keeps them: rounded outward to single precision)
+    List<sweptBoxGrid::box> box(partner.size());
     scalar diagMax = 0;
     forAll(partner, k)
     {
         const ParcelType& pk = *partner[k];
-        box[k] = sweptBoxGrid::sweptBox
+        const boundBox bk
         (
-            pk.stage().startPosition(), partnerX1[k], 0.5*inflate*pk.d()
+            sweptBoxGrid::sweptBox
+            (
+                pk.stage().startPosition(), partnerX1[k], 0.5*inflate*pk.d()
+            )
         );
-        diagMax = max(diagMax, mag(box[k].span()));
+        box[k] = sweptBoxGrid::rounded(bk);
+        diagMax = max(diagMax, mag(bk.span()));
     }
     const List<vector> shifts(lattice_.shifts(2*diagMax));
 
@@ -178,11 +183,16 @@ void Foam::BruteForcePairSearch<ParcelType>::search
                 const point xk(partnerX1[k] + s);
                 autoPtr<ParcelType> copy(new ParcelType(pk));
                 copy->transformProperties(s);
-                const boundBox bk
+                const sweptBoxGrid::box bk
                 (
-                    sweptBoxGrid::sweptBox
+                    sweptBoxGrid::rounded
                     (
-                        copy->stage().startPosition(), xk, 0.5*inflate*copy->d()
+                        sweptBoxGrid::sweptBox
+                        (
+                            copy->stage().startPosition(),
+                            xk,
+                            0.5*inflate*copy->d()
+                        )
                     )
                 );
                 if (!sweptBoxGrid::overlap(box[i], bk))

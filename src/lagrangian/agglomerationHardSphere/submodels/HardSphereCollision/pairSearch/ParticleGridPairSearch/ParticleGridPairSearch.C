@@ -273,20 +273,24 @@ void Foam::ParticleGridPairSearch<ParcelType>::search
     refer(parcels, x1, inflate, spanMax);
 
     // The boxes of the real particles, then of the referred partners
-    // (their start positions are shifted with them): one list, allocated
-    // once at its final size
+    // (their start positions are shifted with them), in single precision
+    // rounded outward: one list, allocated once at its final size
     const label m = referred_.size();
-    List<boundBox> boxes(n + m);
+    List<sweptBoxGrid::box> boxes(n + m);
     forAll(parcels, i)
     {
-        boxes[i] = sweptBox(*parcels[i], x1[i], inflate);
+        boxes[i] =
+            sweptBoxGrid::rounded(sweptBox(*parcels[i], x1[i], inflate));
     }
     forAll(referred_, k)
     {
-        boxes[n + k] = sweptBox(*referred_[k], referredX1_[k], inflate);
+        boxes[n + k] = sweptBoxGrid::rounded
+        (
+            sweptBox(*referred_[k], referredX1_[k], inflate)
+        );
     }
 
-    // The grid lives for this search only: its arrays (about 100 B per
+    // The grid lives for this search only: its arrays (about 45 B per
     // particle with the boxes) are not held between steps
     sweptBoxGrid grid;
     grid.build(std::move(boxes), n, 0);

@@ -44,7 +44,7 @@ Foam::sweptBoxGrid::sweptBoxGrid()
     mask_(0),
     start_(1, Zero),
     items_(),
-    itemKey_()
+    tags_()
 {}
 
 
@@ -52,7 +52,7 @@ Foam::sweptBoxGrid::sweptBoxGrid()
 
 void Foam::sweptBoxGrid::build
 (
-    List<boundBox>&& boxes,
+    List<box>&& boxes,
     const label nReal,
     const scalar spacing
 )
@@ -65,19 +65,22 @@ void Foam::sweptBoxGrid::build
     {
         start_ = labelList(1, Zero);
         items_.clear();
-        itemKey_.clear();
+        tags_.clear();
         return;
     }
 
     // Origin, extent and spacing
-    point lo(boxes_[0].min());
-    point hi(boxes_[0].max());
+    point lo(boxes_[0].min[0], boxes_[0].min[1], boxes_[0].min[2]);
+    point hi(boxes_[0].max[0], boxes_[0].max[1], boxes_[0].max[2]);
     vector meanExtent(Zero);
-    for (const boundBox& b : boxes_)
+    for (const box& b : boxes_)
     {
-        lo = min(lo, b.min());
-        hi = max(hi, b.max());
-        meanExtent += b.span();
+        for (direction c = 0; c < 3; ++c)
+        {
+            lo[c] = min(lo[c], scalar(b.min[c]));
+            hi[c] = max(hi[c], scalar(b.max[c]));
+            meanExtent[c] += scalar(b.max[c]) - scalar(b.min[c]);
+        }
     }
     meanExtent /= n;
 
@@ -101,8 +104,8 @@ void Foam::sweptBoxGrid::build
     {
         for (direction c = 0; c < 3; ++c)
         {
-            r[c] = index(boxes_[i].min()[c], c);
-            r[c + 3] = index(boxes_[i].max()[c], c);
+            r[c] = index(boxes_[i].min[c], c);
+            r[c + 3] = index(boxes_[i].max[c], c);
         }
     };
 
@@ -149,7 +152,7 @@ void Foam::sweptBoxGrid::build
     start_[nBuckets] = nInsert;
 
     items_.setSize(nInsert);
-    itemKey_.setSize(nInsert);
+    tags_.setSize(nInsert);
     for (label i = n - 1; i >= 0; --i)
     {
         binRange(i);
@@ -161,7 +164,7 @@ void Foam::sweptBoxGrid::build
                 {
                     const label pos = --start_[bucket(bi, bj, bk)];
                     items_[pos] = i;
-                    itemKey_[pos] = key(bi, bj, bk);
+                    tags_[pos] = tag(bi, bj, bk);
                 }
             }
         }
