@@ -258,6 +258,9 @@ def judge(base, var):
 
 
 def report(res):
+    # The width of the variant column: the longest name
+    wn = max([12] + [len(n) for n in res["variants"]]
+             + [len(n) for n in res.get("cost", {})])
     lines = [f"channelSolverSettings: preset {res['preset']}, "
              f"{res['batches']} batches of {res['batch']} T* from T* "
              f"{res['startTstar']:.0f}; serial; bias: the mean over the "
@@ -267,8 +270,9 @@ def report(res):
                          ["solvers"]["p"].items())
              + "; U tolerance " + str(res["settings"]["base"]["solvers"]
                                       ["(U|UFinal)"]["tolerance"]) + ")",
-             "variant       s/step  ratio  it p/pFinal/U    u_tau/U_B  "
-             "largest |bias|/sigma_run (quantity, bias/SE)  visible"]
+             f"{'variant':<{wn}}  s/step  ratio  it p/pFinal/U    "
+             "u_tau/U_B  largest |bias|/sigma_run (quantity, bias/SE)  "
+             "visible"]
     base_s = np.mean([x["step_s"] for x in res["variants"]["base"]
                       ["batches"]])
     for name, v in res["variants"].items():
@@ -279,7 +283,7 @@ def report(res):
         t = (abs(w["bias"]) / w["biasSE"] if w["biasSE"] else
              0.0 if w["bias"] == 0 else math.inf)
         lines.append(
-            f"{name:<12}  {st:.4f}  {st / base_s:5.3f}  "
+            f"{name:<{wn}}  {st:.4f}  {st / base_s:5.3f}  "
             f"{np.mean([x['itP'] for x in b]):3.1f}/"
             f"{np.mean([x['itPFinal'] for x in b]):4.1f}/"
             f"{np.mean([x['itU'] for x in b]):4.1f}   "
@@ -288,7 +292,7 @@ def report(res):
             f"{'yes' if v['visible'] else 'no':>{max(3, 27 - len(q))}}")
     cost = res.get("cost", {})
     for name, c in cost.items():
-        lines.append(f"cost {res['costCase']}: {name:<12} {c['step_s']:.4f}"
+        lines.append(f"cost {res['costCase']}: {name:<{wn}} {c['step_s']:.4f}"
                      f" s/step ({c['step_s'] / cost['base']['step_s']:.3f}"
                      f" of base), it p/pFinal/U {c['itP']:.1f}/"
                      f"{c['itPFinal']:.1f}/{c['itU']:.1f}")

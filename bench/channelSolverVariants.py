@@ -22,6 +22,7 @@ VARIANTS = {
     "pRelTol0.05": {"p/relTol": "0.05"},
     "GaussSeidel": {"p/smoother": "GaussSeidel"},
     "mergeLevels2": {"p/+mergeLevels": "2"},
+    "momentumPredictorOff": {"PIMPLE/+momentumPredictor": "off"},
 }
 
 #: Variants only timed (--cost-only): GAMG's other knobs and PCG
@@ -45,7 +46,10 @@ def fv_solution(name):
         end = text.index("}", m.end()) if m else 0
         body, n = text[m.end():end] if m else "", 0
         if m and key.startswith("+"):
-            body, n = body.rstrip(" ") + f"        {key[1:]} {value};\n    ", 1
+            # Indented as the block's entries, before its closing brace
+            indent = re.search(r"\n([ \t]*)\S", body).group(1)
+            body, n = (body.rstrip(" ") + f"{indent}{key[1:]} {value};\n"
+                       + indent[:-4]), 1
         elif m:
             body, n = re.subn(rf"(\n\s*{key}\s+)[^;]+;",
                               r"" if value is None else rf"\g<1>{value};",

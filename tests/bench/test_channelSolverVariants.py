@@ -63,3 +63,14 @@ def test_added_and_removed_entries(variants, tmp_path):
     assert ours["PIMPLE"] == theirs["PIMPLE"]
     assert variants.settings_of("coarsest100")["solvers"]["p"][
         "nCellsInCoarsestLevel"] == 100
+
+
+def test_entry_added_to_a_top_level_block(variants):
+    """momentumPredictorOff adds its entry to PIMPLE, indented as PIMPLE's
+    entries, and changes nothing else."""
+    theirs = foamfile.read_dict(variants.TUTORIAL / "system" / "fvSolution")
+    ours = variants.settings_of("momentumPredictorOff")
+    assert ours["PIMPLE"] == dict(theirs["PIMPLE"], momentumPredictor="off")
+    assert ours["solvers"] == theirs["solvers"]
+    assert "\n    momentumPredictor off;\n}" in \
+        variants.fv_solution("momentumPredictorOff")
