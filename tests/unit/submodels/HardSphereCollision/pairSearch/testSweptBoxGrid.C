@@ -54,9 +54,10 @@ List<boundBox> cloud
 }
 
 
-//- The exact pairs: every overlapping pair of the double-precision boxes
-//  with a real first member
-pairSet exactPairs(const List<boundBox>& boxes, const label nReal)
+//- Every overlapping pair of the boxes (double precision, or the grid's
+//  rounded ones) with a real first member
+template<class Box>
+pairSet overlapping(const List<Box>& boxes, const label nReal)
 {
     pairSet s;
     for (label a = 0; a < nReal; ++a)
@@ -85,23 +86,17 @@ List<sweptBoxGrid::box> rounded(const List<boundBox>& boxes)
 }
 
 
-//- The oracle: every overlapping pair of the rounded boxes with a real
-//  first member
+//- The exact pairs: those of the double-precision boxes
+pairSet exactPairs(const List<boundBox>& boxes, const label nReal)
+{
+    return overlapping(boxes, nReal);
+}
+
+
+//- The oracle: the pairs of the rounded boxes
 pairSet bruteForce(const List<boundBox>& boxes, const label nReal)
 {
-    const List<sweptBoxGrid::box> r(rounded(boxes));
-    pairSet s;
-    for (label a = 0; a < nReal; ++a)
-    {
-        for (label b = a + 1; b < r.size(); ++b)
-        {
-            if (sweptBoxGrid::overlap(r[a], r[b]))
-            {
-                s.insert({a, b});
-            }
-        }
-    }
-    return s;
+    return overlapping(rounded(boxes), nReal);
 }
 
 
