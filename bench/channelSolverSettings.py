@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""The channel's linear-solver settings against what they change: each
-variant of system/fvSolution of tutorials/verticalChannel (one setting
-changed from the tutorial's) runs the unladen LES of a preset over a
-declared window from the same developed flow, and its cost per step, its
-u_tau/U_B and its mean and rms profiles are set against those of the
-tutorial's settings over the same window.
+"""The channel's solver settings against what they change: each variant
+of system/fvSolution or system/fvSchemes of tutorials/verticalChannel
+(one setting changed from the tutorial's) runs the unladen LES of a
+preset over a declared window from the same developed flow, and its cost
+per step, its u_tau/U_B and its mean and rms profiles are set against
+those of the tutorial's settings over the same window.
 
     source etc/bashrc
     .venv/bin/python bench/channelSolverSettings.py [--preset small]
@@ -81,8 +81,7 @@ def _beside(name):
 channelCosts = _beside("channelCosts")
 variants = _beside("channelSolverVariants")
 VARIANTS, COST_ONLY = variants.VARIANTS, variants.COST_ONLY
-settings_of, write_fv_solution = (variants.settings_of,
-                                  variants.write_fv_solution)
+settings_of, write_settings = variants.settings_of, variants.write_settings
 OUT = ROOT / "bench" / "runs" / "channelSolverSettings"
 RESULTS = {"path": ROOT / "bench" / "results" / "channelSolverSettings"}
 APP = "aggloPimpleFoam"
@@ -144,7 +143,7 @@ def developed_flow(a):
         run([sys.executable, str(TUTORIAL / "channel.py"), "init", "."],
             start, "log.init")
         solve(start, "log.develop")
-    write_fv_solution(start, "base")
+    write_settings(start, "base")
     set_stage(start, a.preset, steps_of(a.preset, a.spinup))
     solve(start, "log.spinup")
     t = times.time_dirs(start)[-1].name
@@ -211,7 +210,7 @@ def run_variant(name, start, a):
     p = channel.preset(a.preset)
     case = OUT / name
     branch(start, case)
-    write_fv_solution(case, name)
+    write_settings(case, name)
     (case / "system" / "controlDict").write_text(
         (case / "system" / "controlDict").read_text() + AVERAGE)
     if name == "null":
@@ -235,7 +234,7 @@ def cost(name, src, steps, pname):
     """Serial s/step of a variant from the developed flow src."""
     case = OUT / "cost" / name
     branch(src, case)
-    write_fv_solution(case, name)
+    write_settings(case, name)
     set_stage(case, pname, steps)
     solve(case, "log.cost")
     return step_stats(log_steps((case / "log.cost").read_text()))

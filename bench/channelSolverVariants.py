@@ -1,7 +1,7 @@
-"""The variants of the channel's linear-solver settings that
-bench/channelSolverSettings.py runs: the tutorial's
-system/fvSolution with one entry changed (or GAMG's other knobs, only
-timed), written into a case and recorded as parsed."""
+"""The variants of the channel's solver settings that
+bench/channelSolverSettings.py runs: the tutorial's system/fvSolution
+or system/fvSchemes with one setting changed (or GAMG's other knobs, only
+timed), written into a case and recorded."""
 
 import re
 import sys
@@ -12,7 +12,8 @@ from aggloTools.runner import project_dir
 TUTORIAL = project_dir() / "tutorials" / "verticalChannel"
 
 #: One setting of the tutorial's system/fvSolution changed per variant
-#: ("block/key": value; null: the start flow rounded instead)
+#: ("block/key": value; "fvSchemes:block/key" for system/fvSchemes;
+#: null: the start flow rounded instead)
 VARIANTS = {
     "base": {},
     "null": {},
@@ -23,6 +24,12 @@ VARIANTS = {
     "GaussSeidel": {"p/smoother": "GaussSeidel"},
     "mergeLevels2": {"p/+mergeLevels": "2"},
     "momentumPredictorOff": {"PIMPLE/+momentumPredictor": "off"},
+    # The mesh is orthogonal: the explicit non-orthogonal corrections of
+    # the Laplacians and surface-normal gradients are round-off, but each
+    # costs a gradient, its interpolation to the faces and a divergence
+    "uncorrected": {
+        "fvSchemes:laplacianSchemes/default": "Gauss linear uncorrected",
+        "fvSchemes:snGradSchemes/default": "uncorrected"},
 }
 
 #: Variants only timed (--cost-only): GAMG's other knobs and PCG
@@ -34,15 +41,21 @@ COST_ONLY = {
             "p/+preconditioner": "DIC"},
 }
 
-def fv_solution(name):
-    """The tutorial's fvSolution with the variant's entries set in the
-    first block of their name (pFinal takes p's by $p): "block/key" sets
-    an entry the block has, "block/+key" adds one, a value None removes
-    one."""
-    text = (TUTORIAL / "system" / "fvSolution").read_text()
+def system_file(name, fname="fvSolution"):
+    """The tutorial's system/<fname> with the variant's entries of that
+    file set in the first block of their name (pFinal takes p's by $p):
+    "block/key" sets an entry the block has, "block/+key" adds one, a
+    value None removes one; an entry "fvSchemes:block/key" belongs to
+    fvSchemes, any other to fvSolution."""
+    path = TUTORIAL / "system" / fname
+    text = path.read_text()
     for entry, value in (VARIANTS | COST_ONLY)[name].items():
+        efile, _, entry = entry.rpartition(":")
+        if (efile or "fvSolution") != fname:
+            continue
         block, key = entry.rsplit("/", 1)
-        m = re.search(r'\n\s*"?' + re.escape(block) + r'"?\s*\n\s*\{', text)
+        # A block on lines of its own or on one line ("name { ... }")
+        m = re.search(r'\n\s*"?' + re.escape(block) + r'"?\s*\{', text)
         end = text.index("}", m.end()) if m else 0
         body, n = text[m.end():end] if m else "", 0
         if m and key.startswith("+"):
@@ -51,21 +64,31 @@ def fv_solution(name):
             body, n = (body.rstrip(" ") + f"{indent}{key[1:]} {value};\n"
                        + indent[:-4]), 1
         elif m:
-            body, n = re.subn(rf"(\n\s*{key}\s+)[^;]+;",
+            body, n = re.subn(rf"(\s*(?<!\S){re.escape(key)}\s+)[^;]+;",
                               r"" if value is None else rf"\g<1>{value};",
                               body, count=1)
         if n != 1:
-            sys.exit(f"channelSolverSettings: no entry {entry} in "
-                     f"{TUTORIAL / 'system' / 'fvSolution'}")
+            sys.exit(f"channelSolverSettings: no entry {entry} in {path}")
         text = text[:m.end()] + body + text[end:]
     return text
 
 
+def fv_solution(name):
+    return system_file(name, "fvSolution")
+
+
 def settings_of(name):
-    """The variant's solvers and PIMPLE dictionaries, as parsed."""
+    """The variant's solvers and PIMPLE dictionaries, as parsed, and its
+    entries of fvSchemes as set (where it has any)."""
     d = foamfile.parse_dict(fv_solution(name))
-    return {k: d[k] for k in ("solvers", "PIMPLE")}
+    schemes = {k.split(":", 1)[1]: v for k, v in
+               (VARIANTS | COST_ONLY)[name].items()
+               if k.startswith("fvSchemes:")}
+    return {k: d[k] for k in ("solvers", "PIMPLE")} | (
+        {"fvSchemes": schemes} if schemes else {})
 
 
-def write_fv_solution(case, name):
-    (case / "system" / "fvSolution").write_text(fv_solution(name))
+def write_settings(case, name):
+    """The variant's system/fvSolution and system/fvSchemes in case."""
+    for fname in ("fvSolution", "fvSchemes"):
+        (case / "system" / fname).write_text(system_file(name, fname))

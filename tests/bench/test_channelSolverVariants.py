@@ -1,7 +1,7 @@
 """The variants of the channel's solver settings
-(bench/channelSolverVariants.py): base is the tutorial's fvSolution as it
-is, a variant changes its own entries only, and an entry that is not
-there is refused."""
+(bench/channelSolverVariants.py): base is the tutorial's fvSolution and
+fvSchemes as they are, a variant changes its own entries only, and an
+entry that is not there is refused."""
 
 import importlib.util
 
@@ -26,17 +26,18 @@ def test_base_is_the_tutorial_fvSolution(variants, tmp_path):
     """base writes the tutorial's fvSolution as it is; a variant changes
     its own entry only (pFinal follows p's tolerance through $p)."""
     (tmp_path / "system").mkdir()
-    variants.write_fv_solution(tmp_path, "base")
+    variants.write_settings(tmp_path, "base")
+    for fname in ("fvSolution", "fvSchemes"):
+        assert (tmp_path / "system" / fname).read_bytes() == \
+            (variants.TUTORIAL / "system" / fname).read_bytes()
     tutorial = variants.TUTORIAL / "system" / "fvSolution"
-    assert (tmp_path / "system" / "fvSolution").read_bytes() == \
-        tutorial.read_bytes()
     theirs = foamfile.read_dict(tutorial)
     for name, entry, value in (("pTol1e-6", ("p", "tolerance"), 1e-6),
                                ("UTol1e-6", ("(U|UFinal)", "tolerance"),
                                 1e-6),
                                ("GaussSeidel", ("p", "smoother"),
                                 "GaussSeidel")):
-        variants.write_fv_solution(tmp_path, name)
+        variants.write_settings(tmp_path, name)
         ours = foamfile.read_dict(tmp_path / "system" / "fvSolution")
         assert ours["solvers"][entry[0]][entry[1]] == value
         ours["solvers"][entry[0]][entry[1]] = \
@@ -74,3 +75,44 @@ def test_entry_added_to_a_top_level_block(variants):
     assert ours["solvers"] == theirs["solvers"]
     assert "\n    momentumPredictor off;\n}" in \
         variants.fv_solution("momentumPredictorOff")
+
+
+def test_fvSchemes_entries(variants, tmp_path, monkeypatch):
+    """A variant of fvSchemes sets its entries in one-line blocks, leaves
+    fvSolution and every other line of fvSchemes as they are, and records
+    the entries in its settings; uncorrected names the tutorial's
+    entries."""
+    entries = {"fvSchemes:laplacianSchemes/default":
+               "Gauss linear limited corrected 0.5",
+               "fvSchemes:snGradSchemes/default": "limited corrected 0.5"}
+    monkeypatch.setitem(variants.VARIANTS, "limited", entries)
+    (tmp_path / "system").mkdir()
+    variants.write_settings(tmp_path, "limited")
+    system = variants.TUTORIAL / "system"
+    assert (tmp_path / "system" / "fvSolution").read_bytes() == \
+        (system / "fvSolution").read_bytes()
+    ours = (tmp_path / "system" / "fvSchemes").read_text().splitlines()
+    theirs = (system / "fvSchemes").read_text().splitlines()
+    changed = [(a, b) for a, b in zip(theirs, ours) if a != b]
+    assert len(ours) == len(theirs)
+    assert [b.split() for _, b in changed] == [
+        ["laplacianSchemes", "{", "default", "Gauss", "linear", "limited",
+         "corrected", "0.5;", "}"],
+        ["snGradSchemes", "{", "default", "limited", "corrected", "0.5;",
+         "}"]]
+    assert variants.settings_of("limited")["fvSchemes"] == {
+        "laplacianSchemes/default": "Gauss linear limited corrected 0.5",
+        "snGradSchemes/default": "limited corrected 0.5"}
+    assert "fvSchemes" not in variants.settings_of("base")
+    # uncorrected's entries are found in the tutorial's fvSchemes
+    assert variants.settings_of("uncorrected")["fvSchemes"] == {
+        "laplacianSchemes/default": "Gauss linear uncorrected",
+        "snGradSchemes/default": "uncorrected"}
+    variants.system_file("uncorrected", "fvSchemes")
+
+
+def test_unknown_fvSchemes_entry_is_refused(variants, monkeypatch):
+    monkeypatch.setitem(variants.VARIANTS, "bad",
+                        {"fvSchemes:laplacianSchemes/defualt": "x"})
+    with pytest.raises(SystemExit, match="no entry laplacianSchemes/defualt"):
+        variants.system_file("bad", "fvSchemes")
