@@ -52,6 +52,7 @@ from aggloTools.runner import project_dir, tutorial_module
 ROOT = project_dir()
 TUTORIAL = ROOT / "tutorials" / "verticalChannel"
 channel = tutorial_module("verticalChannel", "channel")
+channelParticles = tutorial_module("verticalChannel", "channelParticles")
 
 OUT = ROOT / "bench" / "runs" / "channelCosts"
 STEPS = {"smoke": 60, "small": 40, "medium": 12, "paper": 6}
@@ -293,7 +294,7 @@ def preset_costs(pname, nps, steps, dec_timeout):
         "log.postProcess")
     out["init_s"] = run([sys.executable, str(TUTORIAL / "channel.py"),
                          "init", "."], mesh, "log.init", "python3")[0]
-    py = [sys.executable, str(TUTORIAL / "channel.py")]
+    py = [sys.executable, str(TUTORIAL / "channelParticles.py")]
     for n in nps:
         r = out[f"np{n}"] = {}
         un = base / f"unladen_np{n}"
@@ -327,7 +328,7 @@ def preset_costs(pname, nps, steps, dec_timeout):
               flush=True)
         l2 = base / f"laden2_np{n}"
         t = branch(l1, l2, n)
-        channel.branch_clouds(l2, t, ("EAM", "MAM"))
+        channelParticles.branch_clouds(l2, t, ("EAM", "MAM"))
         settings(l2, pname, "agglomeration", steps, n, ("EAM", "MAM"))
         r["laden2"] = stage(l2, n, steps, N, 2)
         print(f"{pname} np{n} laden2: {r['laden2']['step_s']:.3g} s/step",

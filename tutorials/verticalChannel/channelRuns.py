@@ -50,6 +50,7 @@ from aggloTools import stages, times
 from aggloTools.runner import CommandError
 
 import channel
+import channelParticles
 
 HERE = Path(__file__).resolve().parent
 MATRIX = "C1 C2 C3 C4 R80 R60"
@@ -82,8 +83,8 @@ class Channel:
             channel.settings(self.a.preset, config, stage, tuple(models),
                              self.a.np))
 
-    def python(self, d, suffix, *args):
-        stages.run_logged([sys.executable, HERE / "channel.py", *args],
+    def python(self, d, suffix, script, *args):
+        stages.run_logged([sys.executable, HERE / script, *args],
                           d, f"log.python.{suffix}")
 
     def stage(self, d, stage, config, models=()):
@@ -142,7 +143,7 @@ class Channel:
             stages.run_logged(["blockMesh"], d, "log.blockMesh")
             stages.run_logged(["postProcess", "-func", "writeCellCentres",
                                "-time", "0"], d, "log.postProcess")
-            self.python(d, "init", "init", ".")
+            self.python(d, "init", "channel.py", "init", ".")
         self.stage(d, "unladen", "C1")
 
     def configuration(self, c):
@@ -160,7 +161,8 @@ class Channel:
             if np > 1 and not (d / "processor0").is_dir():
                 stages.run_logged(["decomposePar", "-force"], d,
                                   "log.decomposePar")
-            self.python(d, "release", "release", ".")
+            self.python(d, "release", "channelParticles.py", "release",
+                        ".")
             (d / "released").touch()
         self.stage(d, "release", c)
         self.stage(d, "dispersion", c)
@@ -178,12 +180,13 @@ class Channel:
                                        extra_constant=Path("constant"))
                 # Each model's cloud starts from the same end-of-dispersion
                 # state; the counters (statistics state) start from zero
-                channel.branch_clouds(adir, t, models)
+                channelParticles.branch_clouds(adir, t, models)
                 sys.stdout.flush()
                 stages.run_logged(["postProcess", "-func",
                                    "writeCellCentres", "-time", t], adir,
                                   "log.postProcess")
-                self.python(adir, "seedPairs", "seedPairs", ".", *models)
+                self.python(adir, "seedPairs", "channelParticles.py",
+                            "seedPairs", ".", *models)
                 (adir / "branched").touch()
             self.stage(adir, "agglomeration", c, models)
             if not (adir / "VTK").is_dir():

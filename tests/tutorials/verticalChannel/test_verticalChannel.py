@@ -43,9 +43,9 @@ def run_smoke(tmp, np_):
         shutil.rmtree(case)
     case.mkdir(parents=True)
     for name in ("0.orig", "constant", "system", "presets", "channel.py",
-                 "channelPost.py", "channelPlots.py", "channelReplay.py",
-                 "channelRegime.py", "channelRuns.py", "Allrun",
-                 "Allclean"):
+                 "channelParticles.py", "channelPost.py", "channelPlots.py",
+                 "channelReplay.py", "channelRegime.py", "channelRuns.py",
+                 "Allrun", "Allclean"):
         src = TUTORIAL / name
         (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)
     res = subprocess.run(
@@ -237,8 +237,10 @@ def test_restart_reproduces_the_agglomeration_stage(smoke_runs, tmp_path):
 
 # ----------------------------------------------------------- the release
 
-def _channel_module():
-    return tutorial_module("verticalChannel", "channel")
+def _particles_module():
+    """channelParticles, after channel that it imports."""
+    tutorial_module("verticalChannel", "channel")
+    return tutorial_module("verticalChannel", "channelParticles")
 
 
 def _brute_overlaps(x, dmin, Lx, Lz):
@@ -254,7 +256,7 @@ def _brute_overlaps(x, dmin, Lx, Lz):
 def test_release_places_without_overlap():
     """place(): no two centres closer than 1.001 d (oracle), every centre
     inside the walls' clearance, the same positions for the same seed."""
-    ch = _channel_module()
+    ch = _particles_module()
     L = (2 * math.pi * 0.02, 0.04, math.pi * 0.02)
     dp = 1e-3               # dense: about 30 % of the first draws overlap
     a = ch.place(3000, dp, L, np.random.default_rng(3))
@@ -294,7 +296,7 @@ def test_release_into_processors_is_the_serial_release(smoke_runs):
         got.update({k: (a, b) for k, a, b in zip(i, xp, up)})
     assert sorted(got) == list(range(N_RELEASED))
     assert np.array_equal(np.array([got[k][0] for k in ids]), x)
-    ch = _channel_module()
+    ch = _particles_module()
     grid = ch.Grid(fields.read_internal(p / t / "C"), (16, 16, 16))
     Uf = fields.read_internal(p / t / "U")
     assert np.array_equal(np.array([got[k][1] for k in ids]),

@@ -1,0 +1,243 @@
+#!/usr/bin/env python3
+"""verticalChannel: the particles of a stage's case (doc/cases.md A.1,
+A.11).
+
+    channelParticles.py release CASE
+                        the particles of the case's configuration at its
+                        latest time: seeded uniform random non-overlapping
+                        positions at least d/2 from the walls, the local
+                        fluid velocity, no spin, ids 0..N-1; into the
+                        processor folders of a decomposed case (no
+                        decomposePar)
+    channelParticles.py seedPairs CASE CLOUD ...
+                        the seeded pairs of the smoke preset at the latest
+                        time
+
+The driver (channelRuns.py) calls branch_clouds directly: the released
+cloud becomes one cloud per agglomeration model."""
+
+import re
+import shutil
+import sys
+import time as time_module
+from pathlib import Path
+
+import numpy as np
+
+import channel
+from aggloTools import cloud, fields, placement, times
+
+
+class Grid:
+    """The structured blockMesh grid: cells ordered x fastest, then y, z."""
+
+    def __init__(self, C, n):
+        self.n = n
+        nx, ny, nz = n
+        C = C.reshape(nz, ny, nx, 3)
+        self.xc = C[0, 0, :, 0]
+        self.yc = C[0, :, 0, 1]
+        self.zc = C[:, 0, 0, 2]
+
+    @staticmethod
+    def _nearest(c, v):
+        mid = 0.5 * (c[1:] + c[:-1])
+        return np.searchsorted(mid, v)
+
+    def cell(self, x):
+        nx, ny, nz = self.n
+        i = self._nearest(self.xc, x[:, 0])
+        j = self._nearest(self.yc, x[:, 1])
+        k = self._nearest(self.zc, x[:, 2])
+        return i + nx * (j + ny * k)
+
+
+# ----------------------------------------------------------------- release
+
+def place(N, dp, L, rng):
+    """N non-overlapping positions (centre distance at least 1.001 dp) in
+    the channel [0, Lx) x [dp/2 1.001, Ly - dp/2 1.001] x [0, Lz),
+    periodic in x and z (aggloTools.placement)."""
+    Lx, Ly, Lz = L
+    try:
+        return placement.place(N, dp * 1.001, (0, dp / 2 * 1.001, 0),
+                               (Lx, Ly - dp / 2 * 1.001, Lz),
+                               (Lx, None, Lz), rng)
+    except RuntimeError as e:
+        sys.exit(f"channelParticles.py release: {e}")
+
+
+def mesh_lines(case):
+    """The face coordinates along x, y and z of the one-block blockMesh
+    grid (points ordered x fastest, then y, z)."""
+    pts = cloud.read_lagrangian(Path(case) / "constant/polyMesh/points")
+    s = channel.read_settings(case)
+    nx, ny = int(s["nx"]), int(s["ny"])
+    return (pts[:nx + 1, 0], pts[:(nx + 1) * (ny + 1):nx + 1, 1],
+            pts[::(nx + 1) * (ny + 1), 2])
+
+
+def containing_cell(lines, x):
+    """Index of the cell that contains each position (x, y, z)."""
+    ijk = [np.clip(np.searchsorted(f, x[:, a], "right") - 1, 0, len(f) - 2)
+           for a, f in enumerate(lines)]
+    nx, ny = len(lines[0]) - 1, len(lines[1]) - 1
+    return ijk[0] + nx * (ijk[1] + ny * ijk[2])
+
+
+def release(case, time=None):
+    """Release the particles into the latest time (or time) of the case:
+    serially, or straight into the processor folders of a decomposed case
+    (each particle into the processor that holds its cell, with its
+    global id: the same particles as a serial release, and none goes
+    through decomposePar). A particle starts with the fluid velocity of
+    the cell whose centre is nearest along each axis."""
+    case = Path(case)
+    s = channel.read_settings(case)
+    p = channel.preset(s["preset"])
+    c = channel.configuration(s["configuration"])
+    if time is None:
+        time = times.time_dirs(case)[-1].name
+    C = channel.cell_centres(case, time)
+    grid = Grid(C, p["n"])
+    U = fields.read_internal(case / time / "U")
+    N, dp = int(p["nParticles"]), float(c["d"])
+    rng = np.random.default_rng(int(p["seed"]) + 1000)
+    t0 = time_module.time()
+    x = place(N, dp, p["L"], rng)
+    t1 = time_module.time()
+    Up = U[grid.cell(x)]
+    procs = sorted(case.glob("processor[0-9]*"),
+                   key=lambda d: int(d.name[9:]))
+    if not procs:
+        cloud.write_cloud(case, x, dp, p["rhoParticle"], U=Up,
+                           cloud="particles", time=time)
+    else:
+        owner = np.empty(len(C), np.int64)
+        for rank, d in enumerate(procs):
+            owner[cloud.read_lagrangian(
+                d / "constant/polyMesh/cellProcAddressing").astype(
+                    np.int64)] = rank
+        rank = owner[containing_cell(mesh_lines(case), x)]
+        for r, d in enumerate(procs):
+            mine = np.nonzero(rank == r)[0]
+            cloud.write_cloud(d, x[mine], dp, p["rhoParticle"], U=Up[mine],
+                               cloud="particles", time=time, ids=mine,
+                               count=N, totals=(N, N, len(procs)))
+    t2 = time_module.time()
+    where = f" into {len(procs)} processor folders" if procs else ""
+    print(f"released {N} particles of {dp * 1e6:g} um at t = {time}{where}"
+          f" (seed {int(p['seed']) + 1000}): placed in {t1 - t0:.1f} s,"
+          f" written in {t2 - t1:.1f} s")
+
+
+# ------------------------------------------------------------- branching
+
+def branch_clouds(case, time, models):
+    """Agglomeration branch: the released cloud `particles` of the time
+    (in the case and in each processor folder) becomes one cloud per
+    model with the same particles, cloudProperties, record of the
+    particles (hardSphereCloudState) and source fields; the statistics
+    state is not copied (the counters start from zero)."""
+    case = Path(case)
+    for r in [case / time] + sorted(case.glob(f"processor*/{time}")):
+        src = r / "lagrangian/particles"
+        if not src.is_dir():
+            continue
+        sources = sorted(r.glob("particles:*"))
+        for m in models:
+            shutil.copytree(src, r / "lagrangian" / m)
+            (r / "uniform/lagrangian" / m).mkdir(parents=True)
+            for f in ("cloudProperties", cloud.RECORD):
+                shutil.copy(r / "uniform/lagrangian/particles" / f,
+                            r / "uniform/lagrangian" / m)
+            # the record names the clouds of the case: now the models'
+            rec = r / "uniform/lagrangian" / m / cloud.RECORD
+            rec.write_text(re.sub(
+                r"clouds\s+\d+\s*\([^)]*\);",
+                f"clouds {len(models)} ( {' '.join(models)} );",
+                rec.read_text()))
+            for f in sources:
+                shutil.copy(f, r / f"{m}:{f.name.split(':', 1)[1]}")
+        shutil.rmtree(src)
+        shutil.rmtree(r / "uniform/lagrangian/particles")
+        for f in sources:
+            f.unlink()
+
+
+# ------------------------------------------------------------ seeded pairs
+
+def seed_pairs(case, clouds):
+    """Add the smoke preset's seeded pairs (doc/cases.md A.11) to the clouds of
+    the case's latest time: nPairs pairs in |y| < delta/4 with a centre gap
+    of 1 nm along a random direction n; the partners move with the fluid
+    velocity at the midpoint -/+ du/2 n (head-on approach): du = 0.3 mm/s
+    (must agglomerate) for the even pairs, 20 mm/s (must rebound) for the
+    odd ones. The first five straddle the periodic plane x = 0, the next
+    five the mid plane z = Lz/2 (the processor boundary of the 2-rank
+    run). Ids continue after the released particles. The cloud is
+    rewritten with the legacy positions file (located on reading)."""
+    case = Path(case)
+    s = channel.read_settings(case)
+    p = channel.preset(s["preset"])
+    n_pairs = int(p.get("seededPairs", 0))
+    if not n_pairs:
+        return
+    time = times.time_dirs(case)[-1].name
+    grid = Grid(channel.cell_centres(case, time), p["n"])
+    Uf = fields.read_internal(case / time / "U")
+    dp = float(channel.configuration(s["configuration"])["d"])
+    Lx, Ly, Lz = p["L"]
+    d = p["delta"]
+    rng = np.random.default_rng(int(p["seed"]) + 2000)
+    nvec = rng.standard_normal((n_pairs, 3))
+    nvec /= np.linalg.norm(nvec, axis=1)[:, None]
+    mid = rng.uniform((0, 0.75 * d, 0), (Lx, 1.25 * d, Lz), (n_pairs, 3))
+    mid[:5, 0] = 0.0
+    mid[5:10, 2] = 0.5 * Lz
+    h = 0.5 * dp + 0.5e-9
+    du = np.where(np.arange(n_pairs) % 2 == 0, 0.3e-3, 20e-3)
+    xa, xb = mid - h * nvec, mid + h * nvec
+    for x in (xa, xb):
+        x[:, 0] %= Lx
+    mid_in = mid.copy()
+    mid_in[:, 0] %= Lx
+    um = Uf[grid.cell(mid_in)]
+    ua = um + 0.5 * du[:, None] * nvec
+    ub = um - 0.5 * du[:, None] * nvec
+    x_new = np.empty((2 * n_pairs, 3))
+    u_new = np.empty((2 * n_pairs, 3))
+    x_new[0::2], x_new[1::2] = xa, xb
+    u_new[0::2], u_new[1::2] = ua, ub
+    for name in clouds:
+        ids = cloud.read_lagrangian(case / time / "lagrangian" / name
+                                    / "origId").astype(int)
+        new = {"U": u_new, "d": np.full(2 * n_pairs, dp),
+               "dTarget": np.full(2 * n_pairs, dp),
+               "rho": np.full(2 * n_pairs, p["rhoParticle"]),
+               "nParticle": np.ones(2 * n_pairs),
+               "nPrimary": np.ones(2 * n_pairs), "active": np.ones(
+                   2 * n_pairs), "origId": ids.max() + 1 + np.arange(
+                   2 * n_pairs), "lastPartnerId": -np.ones(2 * n_pairs),
+               "lastPartnerProc": -np.ones(2 * n_pairs),
+               "lastContactTime": np.full(2 * n_pairs, -1e15)}
+        n0 = cloud.append_particles(case, time, name, x_new, new)
+        print(f"{name}: {n_pairs} seeded pairs added to {n0} particles"
+              f" (ids {ids.max() + 1}..{ids.max() + 2 * n_pairs})")
+
+
+# ------------------------------------------------------------------- main
+
+def main(argv):
+    if len(argv) >= 3 and argv[1] == "release":
+        release(argv[2])
+    elif len(argv) >= 3 and argv[1] == "seedPairs":
+        seed_pairs(argv[2], argv[3:])
+    else:
+        print(__doc__)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
