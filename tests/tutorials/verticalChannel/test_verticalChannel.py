@@ -43,7 +43,8 @@ def run_smoke(tmp, np_):
         shutil.rmtree(case)
     case.mkdir(parents=True)
     for name in ("0.orig", "constant", "system", "presets", "channel.py",
-                 "channelParticles.py", "channelPost.py", "channelPlots.py",
+                 "channelParticles.py", "channelPost.py",
+                 "channelRegression.py", "channelPlots.py",
                  "channelReplay.py", "channelRegime.py", "channelRuns.py",
                  "Allrun", "Allclean"):
         src = TUTORIAL / name
@@ -66,8 +67,9 @@ def smoke_runs(foam_env):
 
 def script(name):
     """A script of the tutorial as a module, after the siblings it
-    imports (channel, channelPlots, channelPost)."""
-    for sibling in ("channel", "channelPlots", "channelPost"):
+    imports (channel, channelPlots, channelRegression, channelPost)."""
+    for sibling in ("channel", "channelPlots", "channelRegression",
+                    "channelPost"):
         tutorial_module("verticalChannel", sibling)
     return tutorial_module("verticalChannel", name)
 
