@@ -22,6 +22,7 @@ names the missing ones."""
 
 import argparse
 import json
+import re
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
@@ -92,22 +93,52 @@ def contact_distributions(adir, cloud, p, w0, w1):
             "_un": un, "_yw": yw}
 
 
+def near_wall_over_centre(alpha):
+    """The particle volume fraction of the slabs next to either wall over
+    that of the middle quarter (None where the centre is empty)."""
+    nb = len(alpha)
+    wall = 0.5 * (alpha[0] + alpha[-1])
+    mid = alpha[3 * nb // 8: nb - 3 * nb // 8].mean()
+    return float(wall / mid) if mid > 0 else None
+
+
 def concentration(p, ddir):
     """The particle volume fraction across the channel at the start of
     the agglomeration phase (the dispersion's last write): the near-wall
-    peak (the slabs next to either wall) over the centre (the middle
-    quarter), and the profile itself."""
+    peak (near_wall_over_centre) and the profile itself."""
     f = last_output(ddir, "particles", "profiles.dat")
     if f is None:
         return None
     t = read_table(f)
     a = np.asarray(t["alpha"], float)
     y = np.asarray(t["x"], float)
-    nb = len(a)
-    wall = 0.5 * (a[0] + a[-1])
-    mid = a[3 * nb // 8: nb - 3 * nb // 8].mean()
-    return {"nearWallOverCentre": float(wall / mid) if mid > 0 else None,
+    return {"nearWallOverCentre": near_wall_over_centre(a),
             "y": y.tolist(), "alpha": a.tolist(), "file": str(f)}
+
+
+def concentration_history(p, ddir):
+    """How the near-wall peak grows over the release and dispersion
+    stages: each write's profiles.dat averages the profile over all steps
+    since the release ("N steps sampled"), so the profile of the steps
+    between two writes is (N1 a1 - N0 a0) / (N1 - N0); per interval
+    between writes (the first from the release, T* absolute),
+    near_wall_over_centre of that profile."""
+    base = Path(ddir) / "postProcessing" / "particlesHardSphere"
+    files = sorted(base.glob("*/profiles.dat"),
+                   key=lambda f: float(f.parent.name))
+    out = []
+    n0, a0, T0 = 0, 0.0, channel.end_time(p, "unladen") / p["tScale"]
+    for f in files:
+        m = re.search(r"(\d+) steps sampled", f.read_text().split("\n")[0])
+        n1 = int(m.group(1)) if m else 0
+        a1 = np.asarray(read_table(f)["alpha"], float)
+        T1 = float(f.parent.name) / p["tScale"]
+        if n1 > n0:
+            out.append({"T0": T0, "T1": T1, "nearWallOverCentre":
+                        near_wall_over_centre((n1 * a1 - n0 * a0)
+                                              / (n1 - n0))})
+            n0, a0, T0 = n1, a1, T1
+    return out
 
 
 def nprocs(d):
@@ -190,6 +221,8 @@ def analyse_variant(name, runs=None):
                              "agglomeration": (ut_ag / p["Ubar"]
                                                if ut_ag else None)}
     out["concentration"] = concentration(p, adir.parent / "dispersion")
+    out["concentrationHistory"] = concentration_history(
+        p, adir.parent / "dispersion")
     out["times"] = stage_times(base)
     return out
 
@@ -261,7 +294,7 @@ def plots(res, out):
     done = [v for v in res["variants"] if v["result"]]
     if not done:
         return
-    fig, ax = plt.subplots(1, 3, figsize=(14, 4.2))
+    fig, ax = plt.subplots(1, 4, figsize=(18, 4.2))
     xs = np.arange(len(done))
     for k, m in enumerate(MODELS):
         f = [v["result"]["models"][m]["f_col_scaled"] for v in done]
@@ -289,6 +322,17 @@ def plots(res, out):
     ax[2].set_ylabel("particle volume fraction [-]")
     ax[2].set_title("at the start of agglomeration", fontsize=9)
     ax[2].legend(fontsize=7)
+    for v in done:
+        h = v["result"].get("concentrationHistory")
+        if h:
+            ax[3].step([x["T1"] for x in h],
+                       [x["nearWallOverCentre"] for x in h], where="pre",
+                       label=v["name"])
+    ax[3].axhline(1, color="0.6", lw=0.8)
+    ax[3].set_xlabel(r"$T^*$ (release and dispersion) [-]")
+    ax[3].set_ylabel("near-wall / centre volume fraction [-]")
+    ax[3].set_title("between writes", fontsize=9)
+    ax[3].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(out / "regime.png", dpi=110)
     plt.close(fig)

@@ -4,6 +4,7 @@ test_verticalChannel.py."""
 
 import threading
 
+import numpy as np
 import pytest
 
 from aggloTools.runner import tutorial_module
@@ -48,3 +49,38 @@ def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
                         "regime32"]) == 0
     with pytest.raises(SystemExit):
         regime.main(["channelRegime.py", "run", "-j", "0", "regime32"])
+
+
+def test_concentration_between_writes(tmp_path):
+    """concentration_history undoes the running average of profiles.dat:
+    a release uniform for its first 10 steps (alpha 1 everywhere), then 20
+    steps with the slabs next to the walls at 3 and the rest at 1, written
+    as the averages over 10 and 30 steps, give near-wall over centre 1 and
+    then 3 (hand values), over T* from the release to each write."""
+    import channel
+    regime = channel_regime()
+    p = channel.preset("smoke")
+    nb = 16
+    later = np.ones(nb)
+    later[[0, -1]] = 3.0
+    t0 = channel.end_time(p, "unladen")
+    writes = ((10, np.ones(nb), t0 + 0.5 * p["tScale"]),
+              (30, (10 * np.ones(nb) + 20 * later) / 30,
+               t0 + 1.5 * p["tScale"]))
+    base = tmp_path / "postProcessing" / "particlesHardSphere"
+    for n, alpha, t in writes:
+        d = base / f"{t:.12g}"
+        d.mkdir(parents=True)
+        rows = "\n".join(f"{(i + 0.5) / nb:.6g} {float(a):.17g}"
+                         for i, a in enumerate(alpha))
+        (d / "profiles.dat").write_text(
+            f"# Profiles of cloud particles along (0 1 0), {n} steps "
+            f"sampled\n# x alpha\n{rows}\n")
+    h = regime.concentration_history(p, tmp_path)
+    T0 = t0 / p["tScale"]
+    assert [x["T0"] - T0 for x in h] == pytest.approx([0.0, 0.5])
+    assert [x["T1"] - T0 for x in h] == pytest.approx([0.5, 1.5])
+    assert [x["nearWallOverCentre"] for x in h] == pytest.approx([1, 3])
+    # the last write's running average alone: (10 + 20 x 3) / 30 = 7/3
+    assert regime.concentration(p, tmp_path)["nearWallOverCentre"] == \
+        pytest.approx(7 / 3)
