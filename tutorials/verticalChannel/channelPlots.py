@@ -99,7 +99,7 @@ def plots(out, p, res, runs):
     # agglomerate sizes at the end
     fig, ax = plt.subplots(figsize=(7, 4.5))
     width = 0.8 / max(1, len(keys))
-    kmax = 2
+    kmax, nmax = 2, 1.0
     for i, k in enumerate(keys):
         f = last_output(*runs[k], "agglomerateSizes.dat")
         if f is None:
@@ -110,12 +110,13 @@ def plots(out, p, res, runs):
             ax.bar(t["k"] - 0.4 + (i + 0.5) * width, t["count"],
                    width=width, label=f"{k[0]} {k[1]}", color=f"C{i}")
             kmax = max(kmax, int(np.max(t["k"])))
+            nmax = max(nmax, float(np.max(t["count"])))
     ax.set_xticks(range(2, kmax + 1))
     ax.set_xlim(1.5, kmax + 0.5)
     ax.set_xlabel("primaries per agglomerate [-]")
     ax.set_ylabel("agglomerates $N_a$ [-]")
     ax.set_yscale("log")
-    ax.set_ylim(bottom=0.5)
+    ax.set_ylim(0.5, 3 * nmax)     # room above the tallest bar
     ax.legend(fontsize=8)
     ax.set_title("agglomerates per size at the end of the stage")
     fig.tight_layout()
