@@ -15,7 +15,15 @@ $HOME/aggloRuns/base-8967eb5. --repeat runs each build R times (default
 other load only ever slows a run). Writes --out (default
 bench/results/channelCosts-vs-<baseline commit>.json) and prints a table
 of the ratios: s per step of each stage, the cloud's us per
-particle-step, and the peak memory per particle.
+particle-step, and the peak memory per particle; and, per build, the
+projected wall time of a C1 of the preset at its phase lengths on those
+ranks (unladen steps at the unladen step's cost, release and dispersion
+at the one-cloud step's, agglomeration at the two-cloud step's; the
+steps measured right after the release, so a developed near-wall
+concentration may cost more).
+
+    .venv/bin/python bench/channelCostsVs.py --report FILE
+        prints the table of a stored FILE again, with the projections
 """
 
 import argparse
@@ -25,12 +33,15 @@ import subprocess
 import sys
 from pathlib import Path
 
-from aggloTools.runner import project_dir
+from aggloTools.runner import project_dir, tutorial_module
 
 ROOT = project_dir()
 RESULTS = Path("bench/runs/channelCosts/results.json")
 STAGES = ("unladen", "laden1", "laden2")
 CLOUD = ("tracking_us", "stage_us", "rest_us")
+#: Which step of the cost runs each phase of a configuration runs
+PHASES = (("unladen", "unladen"), ("release", "laden1"),
+          ("dispersion", "laden1"), ("agglomeration", "laden2"))
 
 
 def commit(root):
@@ -99,6 +110,16 @@ def ratios(base, this):
     return out
 
 
+def projection_h(preset, costs_np):
+    """Hours of a C1 of the preset at its phase lengths from one build's
+    step costs on one rank count: {phase: h, "total": h}."""
+    p = tutorial_module("verticalChannel", "channel").preset(preset)
+    out = {ph: p[ph] / p["dtStar"] * costs_np[stage]["step_s"] / 3600
+           for ph, stage in PHASES}
+    out["total"] = sum(out.values())
+    return out
+
+
 def table(res):
     lines = ["| preset | ranks | unladen | laden 1 cloud | laden 2 clouds |"
              " tracking | stage | rest | B/particle (baseline -> this) |",
@@ -112,10 +133,25 @@ def table(res):
                 + " | ".join(f"{q[c]:.3f}" if c in q else "-"
                              for c in CLOUD)
                 + (f" | {b[0]:.0f} -> {b[1]:.0f} |" if b else " | - |"))
+    lines += ["", "| preset | ranks | C1 at the phase lengths, h: baseline"
+              " -> this (unladen + release + dispersion + agglomeration)"
+              " |", "|---|---|---|"]
+    for p, r in res["presets"].items():
+        for key in r["ratios"]:
+            h = [projection_h(p, r[b][key]) for b in ("baseline", "this")]
+            lines.append(f"| {p} | {key[2:]} | {h[0]['total']:.1f} -> "
+                         f"{h[1]['total']:.1f} (" + " + ".join(
+                             f"{h[1][ph]:.1f}" for ph, _ in PHASES)
+                         + ") |")
     return "\n".join(lines)
 
 
 def main():
+    if sys.argv[1:2] == ["--report"] and len(sys.argv) == 3:
+        res = json.loads(Path(sys.argv[2]).read_text())
+        print(f"this build ({res['this'][:7]}) / baseline "
+              f"({res['baseline']}), fastest of each:\n" + table(res))
+        return
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("baseline", type=Path)
     ap.add_argument("--presets", default="small")
