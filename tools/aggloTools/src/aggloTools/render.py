@@ -45,11 +45,14 @@ def particles_picture(path, positions, colour, bounds, title="",
     if (~single).any():
         pts = pv.PolyData(x[~single])
         pts[colour_name] = c[~single].astype(float)
+        top = max(3, int(c.max()))
+        # integer sizes: integer labels, at most 7 of them
         pl.add_mesh(pts, scalars=colour_name, cmap="plasma",
-                    clim=[2, max(3, int(c.max()))], point_size=cluster_size,
+                    clim=[2, top], point_size=cluster_size,
                     render_points_as_spheres=True,
                     scalar_bar_args={"title": colour_name,
-                                     "color": "black"})
+                                     "color": "black", "fmt": "%.0f",
+                                     "n_labels": min(top - 1, 7)})
     lo, hi = np.array(bounds[0::2], float), np.array(bounds[1::2], float)
     for axis, pos in walls:
         # the wall as the quad of the box's face at pos
@@ -67,9 +70,11 @@ def particles_picture(path, positions, colour, bounds, title="",
         d = np.asarray(direction, float)
         pl.add_mesh(pv.Arrow(start=start, direction=d,
                              scale=float(np.linalg.norm(d))), color="red")
-        pl.add_point_labels([np.asarray(start) + d], [label],
+        # the label behind the arrow's tail, clear of its head, in front
+        pl.add_point_labels([np.asarray(start) - 0.1 * d], [label],
                             font_size=14, text_color="red",
-                            shape_opacity=0.0, show_points=False)
+                            shape_opacity=0.0, show_points=False,
+                            always_visible=True)
     if axes:
         pl.show_bounds(bounds=bounds, xtitle=axes[0], ytitle=axes[1],
                        ztitle=axes[2], color="black", font_size=10,
