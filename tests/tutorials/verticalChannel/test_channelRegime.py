@@ -1,5 +1,6 @@
 """channelRegime.py's runner (the regime study's variants, one Allrun
-each); its post-processing is tested on the smoke runs in
+each) and channelRegimeAnalysis's concentration between writes; the
+study's post-processing is tested on the smoke runs in
 test_verticalChannel.py."""
 
 import threading
@@ -13,7 +14,9 @@ from aggloTools.runner import tutorial_module
 def channel_regime():
     """channelRegime as a module, after the siblings it imports."""
     for sibling in ("channel", "channelPlots", "channelRegression",
-                    "channelPost", "channelRegime"):
+                    "channelPost", "channelRegimeTrend",
+                    "channelRegimeAnalysis", "channelRegimeReport",
+                    "channelRegime"):
         module = tutorial_module("verticalChannel", sibling)
     return module
 
@@ -58,7 +61,8 @@ def test_concentration_between_writes(tmp_path):
     as the averages over 10 and 30 steps, give near-wall over centre 1 and
     then 3 (hand values), over T* from the release to each write."""
     import channel
-    regime = channel_regime()
+    channel_regime()
+    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
     p = channel.preset("smoke")
     nb = 16
     later = np.ones(nb)

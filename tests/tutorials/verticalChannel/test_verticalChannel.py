@@ -41,11 +41,9 @@ def run_smoke(tmp, np_):
     if case.exists():
         shutil.rmtree(case)
     case.mkdir(parents=True)
-    for name in ("0.orig", "constant", "system", "presets", "channel.py",
-                 "channelParticles.py", "channelPost.py",
-                 "channelRegression.py", "channelPlots.py",
-                 "channelReplay.py", "channelRegime.py", "channelRuns.py",
-                 "Allrun", "Allclean"):
+    scripts = sorted(f.name for f in TUTORIAL.glob("channel*.py"))
+    for name in ["0.orig", "constant", "system", "presets", "Allrun",
+                 "Allclean"] + scripts:
         src = TUTORIAL / name
         (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)
     res = subprocess.run(
@@ -66,9 +64,10 @@ def smoke_runs(foam_env):
 
 def script(name):
     """A script of the tutorial as a module, after the siblings it
-    imports (channel, channelPlots, channelRegression, channelPost)."""
+    imports."""
     for sibling in ("channel", "channelPlots", "channelRegression",
-                    "channelPost"):
+                    "channelPost", "channelRegimeTrend",
+                    "channelRegimeAnalysis", "channelRegimeReport"):
         tutorial_module("verticalChannel", sibling)
     return tutorial_module("verticalChannel", name)
 

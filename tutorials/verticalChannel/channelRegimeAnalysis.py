@@ -1,0 +1,198 @@
+"""verticalChannel regime study: what each variant's runs show (the
+quantities of regime.json): the rates and alpha over the window, the
+contacts' approach speeds and wall distances from the event log, the
+particle concentration across the channel and its growth, u_tau/U_B and
+the stages' times. channelRegime.py runs the variants and writes the
+report."""
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+import channel
+import channelPost as post
+from aggloTools import eventlog
+from aggloTools.stats import last_output, read_stats, read_table
+
+HERE = channel.HERE
+
+MODELS = ("EAM", "MAM")
+#: AB16 Table 3 / D.6 (channel.TABLE_D6), C1, and the paper's u_tau/U_B
+PAPER = {"f_col_scaled": channel.TABLE_D6["C1"]["fcol"],
+         "f_agg_scaled": channel.TABLE_D6["C1"]["fagg"],
+         "u_tau_over_U_B": 0.053}
+#: Quantiles reported of the distributions at contact
+QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
+
+
+def runs_base(runs, name):
+    return Path(runs or HERE / "runs") / name
+
+
+def contact_distributions(adir, cloud, p, w0, w1):
+    """The collisions of the window (T*agg w0-w1) from the event log: the
+    normal approach speed |u_n| at contact and the wall distance of the
+    contact (in delta), each as quantiles, for all counted contacts and
+    for those that agglomerated, and the first/repeat split."""
+    try:
+        ev = eventlog.read_events(adir, cloud)
+    except FileNotFoundError:
+        return None
+    t0 = channel.end_time(p, "dispersion")
+    T = (ev["time"] - t0) / p["tScale"]
+    ev = ev[(T >= w0) & (T <= w1) & (ev["category"] < 2)]
+    if not len(ev):
+        return {"n": 0}
+    dx = ev["x2"] - ev["x1"]
+    n = dx / np.linalg.norm(dx, axis=1)[:, None]
+    un = np.abs(np.einsum("ij,ij->i", ev["U1"] - ev["U2"], n))
+    # the contact point's distance to the nearer wall (y in 0-2 delta)
+    yc = 0.5 * (ev["x1"][:, 1] + ev["x2"][:, 1])
+    yw = np.minimum(yc, 2 * p["delta"] - yc) / p["delta"]
+    agg = ev["agglomerates"] == 1
+
+    def q(a):
+        return ([float(v) for v in np.quantile(a, QUANTILES)]
+                if len(a) else None)
+    return {"n": int(len(ev)), "nFirst": int((ev["category"] == 0).sum()),
+            "nRepeat": int((ev["category"] == 1).sum()),
+            "nAgg": int(agg.sum()), "quantiles": list(QUANTILES),
+            "un_mm_s": q(1e3 * un), "un_mm_s_agg": q(1e3 * un[agg]),
+            "wallDistance_delta": q(yw),
+            "wallDistance_delta_agg": q(yw[agg]),
+            "_un": un, "_yw": yw}
+
+
+def near_wall_over_centre(alpha):
+    """The particle volume fraction of the slabs next to either wall over
+    that of the middle quarter (None where the centre is empty)."""
+    nb = len(alpha)
+    wall = 0.5 * (alpha[0] + alpha[-1])
+    mid = alpha[3 * nb // 8: nb - 3 * nb // 8].mean()
+    return float(wall / mid) if mid > 0 else None
+
+
+def concentration(p, ddir):
+    """The particle volume fraction across the channel at the start of
+    the agglomeration phase (the dispersion's last write): the near-wall
+    peak (near_wall_over_centre) and the profile itself."""
+    f = last_output(ddir, "particles", "profiles.dat")
+    if f is None:
+        return None
+    t = read_table(f)
+    a = np.asarray(t["alpha"], float)
+    y = np.asarray(t["x"], float)
+    return {"nearWallOverCentre": near_wall_over_centre(a),
+            "y": y.tolist(), "alpha": a.tolist(), "file": str(f)}
+
+
+def concentration_history(p, ddir):
+    """How the near-wall peak grows over the release and dispersion
+    stages: each write's profiles.dat averages the profile over all steps
+    since the release ("N steps sampled"), so the profile of the steps
+    between two writes is (N1 a1 - N0 a0) / (N1 - N0); per interval
+    between writes (the first from the release, T* absolute),
+    near_wall_over_centre of that profile."""
+    base = Path(ddir) / "postProcessing" / "particlesHardSphere"
+    files = sorted(base.glob("*/profiles.dat"),
+                   key=lambda f: float(f.parent.name))
+    out = []
+    n0, a0, T0 = 0, 0.0, channel.end_time(p, "unladen") / p["tScale"]
+    for f in files:
+        m = re.search(r"(\d+) steps sampled", f.read_text().split("\n")[0])
+        n1 = int(m.group(1)) if m else 0
+        a1 = np.asarray(read_table(f)["alpha"], float)
+        T1 = float(f.parent.name) / p["tScale"]
+        if n1 > n0:
+            out.append({"T0": T0, "T1": T1, "nearWallOverCentre":
+                        near_wall_over_centre((n1 * a1 - n0 * a0)
+                                              / (n1 - n0))})
+            n0, a0, T0 = n1, a1, T1
+    return out
+
+
+def nprocs(d):
+    return len(list(d.glob("processor*"))) or 1
+
+
+def stage_times(base):
+    """Wall-clock seconds of each stage (the done.<stage> markers) and the
+    CPU seconds of the solver (the last ExecutionTime of each log, per
+    rank), summed over the C1 stages of a preset's runs."""
+    wall, cpu = {}, 0.0
+    for d in [base / "unladen"] + sorted((base / "C1").glob("*")):
+        for m in d.glob("done.*"):
+            wall[f"{d.name}/{m.name[5:]}"] = float(m.read_text())
+        log = d / "log.aggloPimpleFoam"
+        if log.is_file():
+            # a resumed run (-append) counts from zero again: each segment
+            # adds its last value
+            seg = 0.0
+            for line in log.read_text(errors="replace").splitlines():
+                if line.startswith("ExecutionTime = "):
+                    x = float(line.split()[2])
+                    if x < seg:
+                        cpu += seg * nprocs(d)
+                    seg = x
+            cpu += seg * nprocs(d)
+    return {"wall_s": wall, "wallTotal_s": sum(wall.values()),
+            "cpu_s": cpu}
+
+
+def analyse_variant(name, runs=None):
+    """The study's quantities of one variant (None if its C1
+    agglomeration stage has not finished)."""
+    p = channel.preset(name)
+    base = runs_base(runs, name)
+    dirs = post.run_dirs(name, base)
+    if not all(("C1", m) in dirs for m in MODELS):
+        return None
+    w0, w1 = p["window"]
+    out = {"variant": name, "grid": p["n"], "dtStar": p["dtStar"],
+           "nParticles": p["nParticles"],
+           "phases": [p[k] for k in ("unladen", "release", "dispersion",
+                                     "agglomeration")],
+           "window": [w0, w1], "scale_s2": (channel.N_PAPER
+                                            / p["nParticles"])**2,
+           "models": {}}
+    adir = dirs[("C1", "EAM")][0]
+    for m in MODELS:
+        r = post.analyse_run(p, *dirs[("C1", m)])
+        st = read_stats(adir, m)
+        Tn = (st["Time"] - channel.end_time(p, "dispersion")) / p["tScale"]
+        k = int(np.searchsorted(Tn, w1 - 1e-9))
+        k = min(k, len(Tn) - 1)
+        d = contact_distributions(adir, m, p, w0, w1)
+        out["models"][m] = {
+            key: r[key] for key in (
+                "f_col_scaled", "f_agg_scaled", "alpha_f", "events_col",
+                "events_agg", "sigma_col", "sigma_agg")}
+        out["models"][m].update({
+            "sigma_col_scaled": r["sigma_col"] * r["scale"],
+            "sigma_agg_scaled": r["sigma_agg"] * r["scale"],
+            "alpha_end_of_phase": (float(st["nAgg"][k] / st["nCol"][k])
+                                   if st["nCol"][k] > 0 else None),
+            "nColFirst_end": float(st["nColFirst"][k]),
+            "nColRepeat_end": float(st["nColRepeat"][k]),
+            "nAggFirst_end": float(st["nAggFirst"][k]),
+            "nAggRepeat_end": float(st["nAggRepeat"][k]),
+            "wallImpacts_per_particle_T": r["f_wall"] / p["nParticles"],
+            "colFactorToPaper": r["f_col_scaled"]
+            / PAPER["f_col_scaled"][m],
+            "alphaFactorToPaper": (
+                r["alpha_f"] / (PAPER["f_agg_scaled"][m]
+                                / PAPER["f_col_scaled"][m])
+                if r["alpha_f"] else None),
+            "contacts": ({k2: v for k2, v in d.items()
+                          if not k2.startswith("_")} if d else None)})
+    ut_un, _ = post.u_tau(p, base / "unladen")
+    ut_ag, _ = post.u_tau(p, adir)
+    out["u_tau_over_U_B"] = {"unladen": ut_un / p["Ubar"] if ut_un else None,
+                             "agglomeration": (ut_ag / p["Ubar"]
+                                               if ut_ag else None)}
+    out["concentration"] = concentration(p, adir.parent / "dispersion")
+    out["concentrationHistory"] = concentration_history(
+        p, adir.parent / "dispersion")
+    out["times"] = stage_times(base)
+    return out

@@ -1,0 +1,118 @@
+"""verticalChannel regime study: the report of the variants' results
+(channelRegimeAnalysis): regime.txt, one row per variant and model, and
+regime.png."""
+
+import numpy as np
+
+from channelRegimeAnalysis import MODELS, PAPER
+
+
+def _g(v, fmt=".3g"):
+    return "-" if v is None else format(v, fmt)
+
+
+def table(res):
+    """regime.txt: one row per variant and model."""
+    lines = [
+        "verticalChannel regime study, C1 (EAM and MAM clouds of one LES):"
+        " one shortcut of `small` changed per variant (README.md, 'The"
+        " regime study').",
+        f"paper (Table 3/D.6): f_col x s^2 {PAPER['f_col_scaled']['EAM']:.3g}"
+        f" / {PAPER['f_col_scaled']['MAM']:.3g}, alpha_f "
+        f"{PAPER['f_agg_scaled']['EAM'] / PAPER['f_col_scaled']['EAM']:.3g}"
+        f" / {PAPER['f_agg_scaled']['MAM'] / PAPER['f_col_scaled']['MAM']:.3g}"
+        f" (EAM / MAM), u_tau/U_B {PAPER['u_tau_over_U_B']}", "",
+        f"{'variant':14s} {'model':5s} {'fcol*s2':>9s} {'+-':>7s} "
+        f"{'x paper':>7s} {'fagg*s2':>8s} {'alpha_f':>8s} {'x paper':>7s} "
+        f"{'alpha_end':>9s} {'first/rep':>10s} {'|un| med':>8s} "
+        f"{'y/d med':>7s} {'wall/N/T*':>9s} {'c_w/c_0':>7s} "
+        f"{'u_tau/U_B':>9s} {'wall h':>6s} {'cpu h':>6s}"]
+    for v in res["variants"]:
+        r = v["result"]
+        if r is None:
+            lines.append(f"{v['name']:14s} not run (or not finished) in "
+                         f"{v['runs']}")
+            continue
+        c = r["concentration"] or {}
+        for m in MODELS:
+            x = r["models"][m]
+            ct = x["contacts"] or {}
+            med = (lambda q: q[2] if q else None)
+            lines.append(
+                f"{v['name']:14s} {m:5s} {x['f_col_scaled']:9.4g} "
+                f"{x['sigma_col_scaled']:7.3g} "
+                f"{_g(x['colFactorToPaper']):>7s} "
+                f"{x['f_agg_scaled']:8.4g} {_g(x['alpha_f']):>8s} "
+                f"{_g(x['alphaFactorToPaper']):>7s} "
+                f"{_g(x['alpha_end_of_phase']):>9s} "
+                f"{int(x['nColFirst_end']):>5d}/{int(x['nColRepeat_end']):<4d}"
+                f" {_g(med(ct.get('un_mm_s'))):>8s} "
+                f"{_g(med(ct.get('wallDistance_delta'))):>7s} "
+                f"{_g(x['wallImpacts_per_particle_T']):>9s} "
+                f"{_g(c.get('nearWallOverCentre')):>7s} "
+                f"{_g(r['u_tau_over_U_B']['agglomeration'], '.4f'):>9s} "
+                f"{r['times']['wallTotal_s'] / 3600:6.2f} "
+                f"{r['times']['cpu_s'] / 3600:6.2f}")
+    lines += ["", "fcol*s2, fagg*s2: Eq. 87 over the window, scaled by "
+              "(6e6/N)^2; +-: sigma (batch means or Poisson); x paper: "
+              "sim/paper; alpha_end: N_agg/N_col at the window's end; "
+              "first/rep: first and repeat contacts by then; |un| med: "
+              "median normal approach speed at contact (mm/s), y/d med: "
+              "median wall distance of the contacts (in delta), both over"
+              " the window's contacts of the event log; wall/N/T*: wall "
+              "impacts per particle and T*; c_w/c_0: particle volume "
+              "fraction next to the walls over the centre's at the start "
+              "of the agglomeration phase; wall h, cpu h: the C1 stages' "
+              "wall-clock and CPU hours (all ranks)."]
+    return "\n".join(lines) + "\n"
+
+
+def plots(res, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    done = [v for v in res["variants"] if v["result"]]
+    if not done:
+        return
+    fig, ax = plt.subplots(1, 4, figsize=(18, 4.2))
+    xs = np.arange(len(done))
+    for k, m in enumerate(MODELS):
+        f = [v["result"]["models"][m]["f_col_scaled"] for v in done]
+        s = [v["result"]["models"][m]["sigma_col_scaled"] for v in done]
+        a = [v["result"]["models"][m]["alpha_f"] or np.nan for v in done]
+        ax[0].errorbar(xs + 0.1 * k, f, s, fmt="o", label=m)
+        ax[1].plot(xs + 0.1 * k, a, "o", label=m)
+        ax[0].axhline(PAPER["f_col_scaled"][m], ls="--", color=f"C{k}",
+                      lw=0.8, label=f"paper {m}")
+        ax[1].axhline(PAPER["f_agg_scaled"][m] / PAPER["f_col_scaled"][m],
+                      ls="--", color=f"C{k}", lw=0.8, label=f"paper {m}")
+    for a_ in ax[:2]:
+        a_.set_xticks(xs)
+        a_.set_xticklabels([v["name"] for v in done], rotation=30,
+                           fontsize=8)
+        a_.set_yscale("log")
+        a_.legend(fontsize=7)
+    ax[0].set_ylabel(r"$f_{col}\,s^2$ [1/T*]")
+    ax[1].set_ylabel(r"$\alpha_f = f_{agg}/f_{col}$ [-]")
+    for v in done:
+        c = v["result"]["concentration"]
+        if c:
+            ax[2].plot(np.asarray(c["y"]) / 0.02, c["alpha"], label=v["name"])
+    ax[2].set_xlabel(r"wall-normal position $y/\delta$ [-]")
+    ax[2].set_ylabel("particle volume fraction [-]")
+    ax[2].set_title("at the start of agglomeration", fontsize=9)
+    ax[2].legend(fontsize=7)
+    for v in done:
+        h = v["result"].get("concentrationHistory")
+        if h:
+            ax[3].step([x["T1"] for x in h],
+                       [x["nearWallOverCentre"] for x in h], where="pre",
+                       label=v["name"])
+    ax[3].axhline(1, color="0.6", lw=0.8)
+    ax[3].set_xlabel(r"$T^*$ (release and dispersion) [-]")
+    ax[3].set_ylabel("near-wall / centre volume fraction [-]")
+    ax[3].set_title("between writes", fontsize=9)
+    ax[3].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out / "regime.png", dpi=110)
+    plt.close(fig)
