@@ -28,7 +28,8 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import channel
-from channelRegimeAnalysis import analyse_variant, runs_base
+import channelRegimeTrend as trend
+from channelRegimeAnalysis import MODELS, PAPER, analyse_variant, runs_base
 from channelRegimeReport import plots, table
 
 HERE = channel.HERE
@@ -54,6 +55,7 @@ def run_post(runs=None, out=None, names=None):
                                 "changes": what.get(name, "-"),
                                 "runs": str(runs_base(runs, name)),
                                 "result": analyse_variant(name, runs)})
+    res["gridTrend"] = trend.grid_trend(res, MODELS, PAPER)
     (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")
     (out / "regime.txt").write_text(table(res))
     plots(res, out)

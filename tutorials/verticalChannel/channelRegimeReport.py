@@ -4,6 +4,7 @@ regime.png."""
 
 import numpy as np
 
+import channelRegimeTrend as trend
 from channelRegimeAnalysis import MODELS, PAPER
 
 
@@ -64,6 +65,8 @@ def table(res):
               "fraction next to the walls over the centre's at the start "
               "of the agglomeration phase; wall h, cpu h: the C1 stages' "
               "wall-clock and CPU hours (all ranks)."]
+    if "gridTrend" in res:
+        lines += [""] + trend.lines(res["gridTrend"], MODELS)
     return "\n".join(lines) + "\n"
 
 

@@ -354,6 +354,10 @@ def test_regime_study_post(smoke_runs, tmp_path):
     smoke, missing = res["variants"]
     assert missing["result"] is None
     assert "regime32" in (tmp_path / "regime.txt").read_text()
+    # no grid variant finished: the trend to 128^3 is n/r, not guessed
+    assert res["gridTrend"]["variants"] == []
+    assert res["gridTrend"]["EAM"]["f_col_scaled"] is None
+    assert "EAM f_col_scaled: n/r" in (tmp_path / "regime.txt").read_text()
     r = smoke["result"]
     adir = agg_runs(smoke_runs[2])[("C1", "EAM")]
     for m in ("EAM", "MAM"):

@@ -1,0 +1,104 @@
+"""verticalChannel regime study: the trend with the grid. Where no
+affordable variant reaches the paper's regime, the study extrapolates the
+grid variants at the paper's phase lengths (32^3, 48^3, 64^3; one shortcut
+changed: the grid) to the paper's 128^3.
+
+Per model and quantity (f_col x s^2, alpha_f): a power law v = c n^b in
+the cells per direction n, fitted by weighted least squares to ln v (the
+weight of a point 1 / (sigma_v / v)^2, its relative standard error), its
+covariance from those sigmas, scaled by chi^2 / dof where the points
+scatter more than their sigmas (dof >= 1). The value at n = 128 with its
+68 % band (one standard error of ln v there), and the factor to the
+paper. With two points the fit passes through both and the band comes
+from their sigmas alone; with one point, or a value of 0, there is no
+trend (None)."""
+
+import math
+
+import numpy as np
+
+#: The grid variants at the paper's phases and their cells per direction
+GRID_VARIANTS = (("regime32", 32), ("regime48", 48), ("regime64", 64))
+#: The paper's grid (cells per direction)
+N_PAPER_GRID = 128
+
+
+def power_law(n, v, sigma, at=N_PAPER_GRID):
+    """Weighted fit of ln v = a + b ln n: {"b", "sigmaB", "at", "value",
+    "low", "high", "chi2", "dof"}, or None with fewer than two usable
+    points (v > 0, sigma > 0)."""
+    n, v, s = (np.asarray(x, float) for x in (n, v, sigma))
+    ok = (v > 0) & (s > 0)
+    if ok.sum() < 2:
+        return None
+    x, y, w = np.log(n[ok]), np.log(v[ok]), (v[ok] / s[ok])**2
+    A = np.column_stack([np.ones_like(x), x])
+    cov = np.linalg.inv(A.T @ (w[:, None] * A))
+    a, b = cov @ (A.T @ (w * y))
+    dof = len(x) - 2
+    chi2 = float(np.sum(w * (y - a - b * x)**2))
+    if dof > 0:
+        cov = cov * max(1.0, chi2 / dof)
+    g = np.array([1.0, math.log(at)])
+    ln_v, se = a + b * g[1], math.sqrt(float(g @ cov @ g))
+    return {"b": float(b), "sigmaB": math.sqrt(float(cov[1, 1])),
+            "at": at, "value": math.exp(ln_v),
+            "low": math.exp(ln_v - se), "high": math.exp(ln_v + se),
+            "chi2": chi2, "dof": dof}
+
+
+def alpha_sigma(m):
+    """The standard error of alpha_f = f_agg / f_col from theirs."""
+    if not m["alpha_f"] or not m["f_agg_scaled"]:
+        return None
+    return m["alpha_f"] * math.hypot(
+        m["sigma_agg_scaled"] / m["f_agg_scaled"],
+        m["sigma_col_scaled"] / m["f_col_scaled"])
+
+
+def grid_trend(res, models, paper):
+    """Per model, the power laws of f_col x s^2 and alpha_f over the
+    finished grid variants of res (run_post's), with the factor of the
+    value at 128^3 to the paper's; {"variants": [...], model: {...}}."""
+    done = {v["name"]: v["result"] for v in res["variants"]
+            if v["result"]}
+    pts = [(name, n) for name, n in GRID_VARIANTS if name in done]
+    out = {"variants": [name for name, _ in pts]}
+    for m in models:
+        rows = [done[name]["models"][m] for name, _ in pts]
+        ns = [n for _, n in pts]
+        col = power_law(ns, [r["f_col_scaled"] for r in rows],
+                        [r["sigma_col_scaled"] for r in rows])
+        alpha = power_law(ns, [r["alpha_f"] or 0.0 for r in rows],
+                          [alpha_sigma(r) or 0.0 for r in rows])
+        ref_alpha = paper["f_agg_scaled"][m] / paper["f_col_scaled"][m]
+        for fit, ref in ((col, paper["f_col_scaled"][m]),
+                         (alpha, ref_alpha)):
+            if fit:
+                fit["paper"] = ref
+                fit["factorToPaper"] = fit["value"] / ref
+        out[m] = {"f_col_scaled": col, "alpha_f": alpha}
+    return out
+
+
+def lines(trend, models):
+    """The trend's lines of regime.txt."""
+    head = (f"Trend with the grid at the paper's phases "
+            f"({', '.join(trend['variants']) or 'no grid variant'}"
+            f" finished), extrapolated to {N_PAPER_GRID}^3 as v ~ n^b:")
+    out = [head]
+    for m in models:
+        for q in ("f_col_scaled", "alpha_f"):
+            f = trend.get(m, {}).get(q)
+            if not f:
+                out.append(f"  {m} {q}: n/r (fewer than two finished grid"
+                           " variants with a nonzero value)")
+                continue
+            out.append(
+                f"  {m} {q}: b = {f['b']:.2f} +- {f['sigmaB']:.2f}; at "
+                f"{N_PAPER_GRID}^3 {f['value']:.3g} (68 %: {f['low']:.3g}-"
+                f"{f['high']:.3g}), paper {f['paper']:.3g}, x paper "
+                f"{f['factorToPaper']:.2f}"
+                + (f" (chi2 {f['chi2']:.1f} on {f['dof']} dof)"
+                   if f["dof"] else " (two points: no check of the law)"))
+    return out
