@@ -14,11 +14,11 @@ Without foamlib only aggloTools is timed. About 3 minutes with foamlib
 bench/runs/caseFileIO (about 0.4 GB). The figures of the decision:
 bench/results/caseFileIO.txt."""
 
+import argparse
 import shutil
 import signal
 import sys
 import time
-from pathlib import Path
 
 import numpy as np
 
@@ -89,8 +89,14 @@ def volume_file(path, fmt, V):
 
 
 def main():
-    N = int(float(sys.argv[1])) if len(sys.argv) > 1 else 10**6
-    M = int(sys.argv[2]) if len(sys.argv) > 2 else 128
+    ap = argparse.ArgumentParser(
+        prog="caseFileIO.py", description=__doc__.split("\n\n")[0])
+    ap.add_argument("N", nargs="?", type=float, default=1e6,
+                    help="particles (default 1e6)")
+    ap.add_argument("CELLS", nargs="?", type=int, default=128,
+                    help="cells per direction of the field (default 128)")
+    a = ap.parse_args()
+    N, M = int(a.N), a.CELLS
     if OUT.exists():
         shutil.rmtree(OUT)
     OUT.mkdir(parents=True)

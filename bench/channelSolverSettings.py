@@ -51,7 +51,6 @@ one core per variant at small (100 T*), two at a time with -j 2.
 """
 
 import argparse
-import importlib.util
 import json
 import math
 import re
@@ -63,23 +62,14 @@ from pathlib import Path
 import numpy as np
 
 from aggloTools import batches, fields, foamfile, stages, times
-from aggloTools.runner import project_dir, run, tutorial_module
+from aggloTools.runner import bench_module, project_dir, run, tutorial_module
 
 ROOT = project_dir()
 TUTORIAL = ROOT / "tutorials" / "verticalChannel"
 channel = tutorial_module("verticalChannel", "channel")
 
-def _beside(name):
-    """A benchmark script beside this one, imported as a module."""
-    spec = importlib.util.spec_from_file_location(
-        name, Path(__file__).resolve().with_name(f"{name}.py"))
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-channelCosts = _beside("channelCosts")
-variants = _beside("channelSolverVariants")
+channelCosts = bench_module("channelCosts")
+variants = bench_module("channelSolverVariants")
 VARIANTS, COST_ONLY = variants.VARIANTS, variants.COST_ONLY
 settings_of, write_settings = variants.settings_of, variants.write_settings
 OUT = ROOT / "bench" / "runs" / "channelSolverSettings"

@@ -37,8 +37,8 @@ def module_name(f):
 
 def imports(f):
     """The modules f imports (absolute names; relative package imports
-    resolved; tutorial scripts loaded with runner.tutorial_module count
-    as imports of the script)."""
+    resolved; scripts loaded with runner.tutorial_module or
+    runner.bench_module count as imports of the script)."""
     tree = ast.parse(f.read_text())
     out = set()
     for node in ast.walk(tree):
@@ -53,10 +53,10 @@ def imports(f):
             out.add(base)
             out |= {f"{base}.{a.name}" for a in node.names}
         elif isinstance(node, ast.Call) and getattr(
-                node.func, "id", getattr(node.func, "attr", "")) == \
-                "tutorial_module" and len(node.args) == 2 and \
-                isinstance(node.args[1], ast.Constant):
-            out.add(node.args[1].value)
+                node.func, "id", getattr(node.func, "attr", "")) in \
+                ("tutorial_module", "bench_module") and node.args and \
+                isinstance(node.args[-1], ast.Constant):
+            out.add(node.args[-1].value)
     return out
 
 
@@ -105,6 +105,7 @@ def test_no_import_cycle():
     # the graph is the real one: the tutorials use the package
     assert "aggloTools.placement" in g["channelParticles"]
     assert "channel" in g["channelPost"]
+    assert "channelCosts" in g["channelSolverSettings"]
     assert cycles(g) == []
 
 

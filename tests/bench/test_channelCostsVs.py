@@ -1,22 +1,14 @@
 """bench/channelCostsVs.py's projection of a configuration's wall time
 from the measured step costs, against hand values from the presets."""
 
-import importlib.util
-
 import pytest
 
-from aggloTools.runner import project_dir
-
-ROOT = project_dir()
+from aggloTools.runner import bench_module
 
 
 @pytest.fixture(scope="module")
 def costs_vs():
-    spec = importlib.util.spec_from_file_location(
-        "channelCostsVs", ROOT / "bench" / "channelCostsVs.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return bench_module("channelCostsVs")
 
 
 def test_projection_from_step_costs(costs_vs):

@@ -3,23 +3,12 @@ a batch's values (rms with the plane variance of the time means,
 u_tau from the mean driving gradient, iterations, step time) follow hand
 values."""
 
-import importlib.util
 import math
 
 import numpy as np
 import pytest
 
-from aggloTools.runner import project_dir
-
-ROOT = project_dir()
-
-
-def bench_module(name):
-    spec = importlib.util.spec_from_file_location(
-        name, ROOT / "bench" / f"{name}.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+from aggloTools.runner import bench_module
 
 
 @pytest.fixture(scope="module")

@@ -3,23 +3,15 @@
 fvSchemes as they are, a variant changes its own entries only, and an
 entry that is not there is refused."""
 
-import importlib.util
-
 import pytest
 
 from aggloTools import foamfile
-from aggloTools.runner import project_dir
-
-ROOT = project_dir()
+from aggloTools.runner import bench_module
 
 
 @pytest.fixture(scope="module")
 def variants():
-    spec = importlib.util.spec_from_file_location(
-        "channelSolverVariants", ROOT / "bench" / "channelSolverVariants.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return bench_module("channelSolverVariants")
 
 
 def test_base_is_the_tutorial_fvSolution(variants, tmp_path):

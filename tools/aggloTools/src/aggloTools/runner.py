@@ -46,19 +46,32 @@ def run(cmd, cwd, log, check=True, timeout=600):
     return res
 
 
+def _script_module(path, name):
+    """The Python script at path imported as the module `name` (kept in
+    sys.modules: a second call returns the same module)."""
+    import importlib.util
+    import sys
+    if name in sys.modules and \
+            getattr(sys.modules[name], "__file__", None) == str(path):
+        return sys.modules[name]
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
 def tutorial_module(tutorial, script):
     """A tutorial's Python script (tutorials/<tutorial>/<script>.py of the
     project) imported as the module `script`, for the tests and benchmarks
     that call its functions; a script that imports a sibling must be
     loaded after it."""
-    import importlib.util
-    import sys
-    path = project_dir() / "tutorials" / tutorial / f"{script}.py"
-    if script in sys.modules and \
-            getattr(sys.modules[script], "__file__", None) == str(path):
-        return sys.modules[script]
-    spec = importlib.util.spec_from_file_location(script, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[script] = module
-    spec.loader.exec_module(module)
-    return module
+    return _script_module(
+        project_dir() / "tutorials" / tutorial / f"{script}.py", script)
+
+
+def bench_module(script):
+    """A benchmark script (bench/<script>.py of the project) imported as
+    the module `script`, for the tests and the benchmarks that use
+    another one's functions."""
+    return _script_module(project_dir() / "bench" / f"{script}.py", script)
