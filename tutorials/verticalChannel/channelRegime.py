@@ -17,8 +17,9 @@ work tree, --runs). Nothing is tuned: every variant run is reported.
                                             regime.txt, regime.png
 
 --runs: the folder holding runs/<preset> (default: this tutorial's runs/);
-post takes every variant with a finished agglomeration stage there and
-names the missing ones."""
+post takes every variant with a finished agglomeration stage there;
+of the others it reports how far they are and what their release and
+dispersion stages show so far (an interim, not the window)."""
 
 import argparse
 import json
@@ -29,7 +30,8 @@ from pathlib import Path
 
 import channel
 import channelRegimeTrend as trend
-from channelRegimeAnalysis import MODELS, PAPER, analyse_variant, runs_base
+from channelRegimeAnalysis import (MODELS, PAPER, analyse_variant, progress,
+                                   runs_base)
 from channelRegimeReport import plots, table
 
 HERE = channel.HERE
@@ -51,10 +53,12 @@ def run_post(runs=None, out=None, names=None):
     res = {"variants": []}
     what = dict(VARIANTS)
     for name in names or list(what):
-        res["variants"].append({"name": name,
-                                "changes": what.get(name, "-"),
-                                "runs": str(runs_base(runs, name)),
-                                "result": analyse_variant(name, runs)})
+        v = {"name": name, "changes": what.get(name, "-"),
+             "runs": str(runs_base(runs, name)),
+             "result": analyse_variant(name, runs)}
+        if v["result"] is None:
+            v["progress"] = progress(name, runs)
+        res["variants"].append(v)
     res["gridTrend"] = trend.grid_trend(res, MODELS, PAPER)
     (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")
     (out / "regime.txt").write_text(table(res))

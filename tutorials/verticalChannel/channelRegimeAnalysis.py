@@ -12,7 +12,7 @@ import numpy as np
 
 import channel
 import channelPost as post
-from aggloTools import eventlog
+from aggloTools import eventlog, times
 from aggloTools.stats import last_output, read_stats, read_table
 
 HERE = channel.HERE
@@ -87,29 +87,99 @@ def concentration(p, ddir):
             "y": y.tolist(), "alpha": a.tolist(), "file": str(f)}
 
 
-def concentration_history(p, ddir):
+def concentration_history(p, ddir, span=0.0):
     """How the near-wall peak grows over the release and dispersion
     stages: each write's profiles.dat averages the profile over all steps
     since the release ("N steps sampled"), so the profile of the steps
     between two writes is (N1 a1 - N0 a0) / (N1 - N0); per interval
-    between writes (the first from the release, T* absolute),
-    near_wall_over_centre of that profile."""
+    between writes (the first from the release, T* absolute; writes less
+    than `span` T* after the interval's start are passed over, except the
+    last), near_wall_over_centre of that profile."""
     base = Path(ddir) / "postProcessing" / "particlesHardSphere"
     files = sorted(base.glob("*/profiles.dat"),
                    key=lambda f: float(f.parent.name))
     out = []
     n0, a0, T0 = 0, 0.0, channel.end_time(p, "unladen") / p["tScale"]
-    for f in files:
+    for k, f in enumerate(files):
+        T1 = float(f.parent.name) / p["tScale"]
+        if T1 - T0 < span and k < len(files) - 1:
+            continue
         m = re.search(r"(\d+) steps sampled", f.read_text().split("\n")[0])
         n1 = int(m.group(1)) if m else 0
         a1 = np.asarray(read_table(f)["alpha"], float)
-        T1 = float(f.parent.name) / p["tScale"]
         if n1 > n0:
             out.append({"T0": T0, "T1": T1, "nearWallOverCentre":
                         near_wall_over_centre((n1 * a1 - n0 * a0)
                                               / (n1 - n0))})
             n0, a0, T0 = n1, a1, T1
     return out
+
+
+def dispersion_history(p, ddir, span=0.0):
+    """concentration_history with, per interval, the rates of the one
+    cloud of the release and dispersion stages from its stats.dat
+    (cumulative counters, interpolated at the interval's ends):
+    collisions per T* scaled to the paper's particle number (x s^2, as
+    f_col of Eq. 87) and wall impacts per particle and T*. Collisions
+    there rebound (agglomeration starts later), so this is the rate of
+    contacts as the concentration builds up, not the window's f_col.
+    A stats.dat that cannot be read yet (a run writing it) leaves the
+    rates out."""
+    out = concentration_history(p, ddir, span)
+    try:
+        st = read_stats(ddir, "particles")
+    except (FileNotFoundError, ValueError):
+        return out
+    if not len(st["Time"]):
+        return out
+    T = st["Time"] / p["tScale"]
+    s2 = (channel.N_PAPER / p["nParticles"])**2
+    for x in out:
+        dT = x["T1"] - x["T0"]
+        if x["T1"] > T[-1] + 1e-9 or dT <= 0:
+            continue
+        dn = {c: float(np.interp(x["T1"], T, st[c])
+                       - np.interp(x["T0"], T, st[c]))
+              for c in ("nCol", "nWall")}
+        x["fColScaled"] = dn["nCol"] / dT * s2
+        x["wallImpacts_per_particle_T"] = dn["nWall"] / dT \
+            / p["nParticles"]
+    return out
+
+
+#: The stage folders of a variant's C1, in order
+STAGE_DIRS = (("unladen", "unladen", ("unladen",)),
+              ("C1/dispersion", "dispersion", ("release", "dispersion")),
+              ("C1/agglomeration", "agglomeration", ("agglomeration",)))
+
+
+def progress(name, runs=None, span=0.0):
+    """Where a variant stands that has not finished (an interim, not the
+    study's window): per stage folder of C1 that exists, its last
+    complete write and the stage's end (T* from the start of the
+    unladen LES) and the stages done; the release and dispersion history
+    so far (dispersion_history). None where nothing has run."""
+    p = channel.preset(name)
+    base = runs_base(runs, name)
+    stages = {}
+    for folder, last, markers in STAGE_DIRS:
+        d = base / folder
+        if not d.is_dir():
+            continue
+        root = d / "processor0" if (d / "processor0").is_dir() else d
+        cut = times.incomplete_time(root)
+        ts = [t for t in times.time_dirs(root) if t != cut]
+        stages[folder] = {
+            "lastWrite_Tstar": (float(ts[-1].name) / p["tScale"]
+                                if ts else None),
+            "end_Tstar": channel.end_time(p, last) / p["tScale"],
+            "done": [m for m in markers if (d / f"done.{m}").is_file()]}
+    if not stages:
+        return None
+    ddir = base / "C1" / "dispersion"
+    return {"stages": stages,
+            "history": (dispersion_history(p, ddir, span)
+                        if ddir.is_dir() else [])}
 
 
 def nprocs(d):
@@ -192,7 +262,7 @@ def analyse_variant(name, runs=None):
                              "agglomeration": (ut_ag / p["Ubar"]
                                                if ut_ag else None)}
     out["concentration"] = concentration(p, adir.parent / "dispersion")
-    out["concentrationHistory"] = concentration_history(
+    out["concentrationHistory"] = dispersion_history(
         p, adir.parent / "dispersion")
     out["times"] = stage_times(base)
     return out

@@ -31,8 +31,7 @@ def table(res):
     for v in res["variants"]:
         r = v["result"]
         if r is None:
-            lines.append(f"{v['name']:14s} not run (or not finished) in "
-                         f"{v['runs']}")
+            lines.append(f"{v['name']:14s} " + _where(v))
             continue
         c = r["concentration"] or {}
         for m in MODELS:
@@ -67,17 +66,73 @@ def table(res):
               "wall-clock and CPU hours (all ranks)."]
     if "gridTrend" in res:
         lines += [""] + trend.lines(res["gridTrend"], MODELS)
+    lines += _history_lines(res)
     return "\n".join(lines) + "\n"
 
 
+def _history(v):
+    """A variant's release and dispersion history (finished or not)."""
+    if v["result"]:
+        return v["result"].get("concentrationHistory") or []
+    return (v.get("progress") or {}).get("history") or []
+
+
+def _where(v):
+    """How far a variant without results stands."""
+    g = v.get("progress")
+    if not g:
+        return f"not run in {v['runs']}"
+    parts = []
+    for folder, x in g["stages"].items():
+        at = x["lastWrite_Tstar"]
+        parts.append(f"{folder} at T* {_g(at, '.0f')} of "
+                     f"{x['end_Tstar']:.0f}"
+                     + (f" ({', '.join(x['done'])} done)" if x["done"]
+                        else ""))
+    return "not finished: " + "; ".join(parts) + " (interim below)"
+
+
+def _history_lines(res, gap=40.0):
+    """The release and dispersion stages between writes, per variant:
+    intervals at least `gap` T* apart (all of them in regime.json)."""
+    out = ["", "Release and dispersion between writes (T* from the start;"
+           f" intervals at least {gap:g} T* apart, all in regime.json): "
+           "c_w/c_0 of the steps between the two writes; collisions (they"
+           " rebound there: not the window's f_col) per T* x s^2 and wall "
+           "impacts per particle and T* over the interval.",
+           f"{'variant':14s} {'T* from':>8s} {'to':>6s} {'c_w/c_0':>8s} "
+           f"{'col*s2':>8s} {'wall/N/T*':>9s}"]
+    for v in res["variants"]:
+        last = None
+        h = _history(v)
+        for k, x in enumerate(h):
+            if last is not None and x["T1"] - last < gap \
+                    and k < len(h) - 1:
+                continue
+            last = x["T1"]
+            out.append(
+                f"{v['name']:14s} {x['T0']:8.4g} {x['T1']:6.4g} "
+                f"{_g(x['nearWallOverCentre']):>8s} "
+                f"{_g(x.get('fColScaled'), '.4g'):>8s} "
+                f"{_g(x.get('wallImpacts_per_particle_T')):>9s}")
+    return out
+
+
 def plots(res, out):
+    """regime.png: f_col x s^2 and alpha_f of the finished variants, the
+    concentration profile at the start of agglomeration, and over the
+    release and dispersion stages of every variant that has them (dashed:
+    not finished) the near-wall peak, the collision rate and the wall
+    impacts between writes."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     done = [v for v in res["variants"] if v["result"]]
-    if not done:
+    grown = [v for v in res["variants"] if _history(v)]
+    if not done and not grown:
         return
-    fig, ax = plt.subplots(1, 4, figsize=(18, 4.2))
+    fig, axs = plt.subplots(2, 3, figsize=(15, 8.4))
+    ax = axs.ravel()
     xs = np.arange(len(done))
     for k, m in enumerate(MODELS):
         f = [v["result"]["models"][m]["f_col_scaled"] for v in done]
@@ -90,12 +145,13 @@ def plots(res, out):
         ax[1].axhline(PAPER["f_agg_scaled"][m] / PAPER["f_col_scaled"][m],
                       ls="--", color=f"C{k}", lw=0.8, label=f"paper {m}")
     for a_ in ax[:2]:
+        a_.set_xlim(-0.5, max(len(done), 1) - 0.5)
         a_.set_xticks(xs)
         a_.set_xticklabels([v["name"] for v in done], rotation=30,
                            fontsize=8)
         a_.set_yscale("log")
         a_.legend(fontsize=7)
-    ax[0].set_ylabel(r"$f_{col}\,s^2$ [1/T*]")
+    ax[0].set_ylabel(r"$f_{col}\,s^2$ over the window [1/T*]")
     ax[1].set_ylabel(r"$\alpha_f = f_{agg}/f_{col}$ [-]")
     for v in done:
         c = v["result"]["concentration"]
@@ -104,18 +160,32 @@ def plots(res, out):
     ax[2].set_xlabel(r"wall-normal position $y/\delta$ [-]")
     ax[2].set_ylabel("particle volume fraction [-]")
     ax[2].set_title("at the start of agglomeration", fontsize=9)
-    ax[2].legend(fontsize=7)
-    for v in done:
-        h = v["result"].get("concentrationHistory")
-        if h:
-            ax[3].step([x["T1"] for x in h],
-                       [x["nearWallOverCentre"] for x in h], where="pre",
-                       label=v["name"])
+    for k, (key, label) in enumerate((
+            ("nearWallOverCentre", "near-wall / centre volume fraction [-]"),
+            ("fColScaled", r"collisions per T* $\times s^2$ [1/T*]"),
+            ("wallImpacts_per_particle_T",
+             "wall impacts per particle and T* [-]"))):
+        a_ = ax[3 + k]
+        for j, v in enumerate(grown):
+            h = [x for x in _history(v) if x.get(key) is not None]
+            if h:
+                a_.step([x["T1"] for x in h], [x[key] for x in h],
+                        where="pre", color=f"C{j}", marker=".",
+                        ls="-" if v["result"] else "--",
+                        label=v["name"] + ("" if v["result"]
+                                           else " (running)"))
+        a_.set_xlabel(r"$T^*$ (release and dispersion) [-]")
+        a_.set_ylabel(label)
+        a_.set_title("between writes", fontsize=9)
     ax[3].axhline(1, color="0.6", lw=0.8)
-    ax[3].set_xlabel(r"$T^*$ (release and dispersion) [-]")
-    ax[3].set_ylabel("near-wall / centre volume fraction [-]")
-    ax[3].set_title("between writes", fontsize=9)
-    ax[3].legend(fontsize=7)
+    for k, m in enumerate(MODELS):
+        ax[4].axhline(PAPER["f_col_scaled"][m], ls=":", color="0.4",
+                      lw=0.8, label=None if k else
+                      "paper C1, window (EAM, MAM)")
+    ax[4].set_yscale("log")
+    for a_ in ax[2:]:
+        if a_.get_legend_handles_labels()[0]:
+            a_.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(out / "regime.png", dpi=110)
     plt.close(fig)

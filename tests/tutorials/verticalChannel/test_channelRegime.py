@@ -1,7 +1,7 @@
 """channelRegime.py's runner (the regime study's variants, one Allrun
-each) and channelRegimeAnalysis's concentration between writes; the
-study's post-processing is tested on the smoke runs in
-test_verticalChannel.py."""
+each), channelRegimeAnalysis's concentration and rates between writes and
+the progress of an unfinished variant; the study's post-processing is
+tested on the smoke runs in test_verticalChannel.py."""
 
 import threading
 
@@ -54,32 +54,57 @@ def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
         regime.main(["channelRegime.py", "run", "-j", "0", "regime32"])
 
 
-def test_concentration_between_writes(tmp_path):
-    """concentration_history undoes the running average of profiles.dat:
-    a release uniform for its first 10 steps (alpha 1 everywhere), then 20
-    steps with the slabs next to the walls at 3 and the rest at 1, written
-    as the averages over 10 and 30 steps, give near-wall over centre 1 and
-    then 3 (hand values), over T* from the release to each write."""
+END = "\n// ****************************************************** //\n"
+
+
+def write_dispersion(p, case, with_stats=True):
+    """A release uniform for its first 10 steps (alpha 1 everywhere), then
+    20 steps with the slabs next to the walls at 3 and the rest at 1,
+    written as the averages over 10 and 30 steps at T* 0.5 and 1.5 after
+    the release; stats.dat: 4 collisions and 1 wall impact by the first
+    write, 24 and 11 by the second (counters from 0 at the release)."""
     import channel
-    channel_regime()
-    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
-    p = channel.preset("smoke")
     nb = 16
     later = np.ones(nb)
     later[[0, -1]] = 3.0
     t0 = channel.end_time(p, "unladen")
-    writes = ((10, np.ones(nb), t0 + 0.5 * p["tScale"]),
+    writes = ((10, np.ones(nb), t0 + 0.5 * p["tScale"], 4, 1),
               (30, (10 * np.ones(nb) + 20 * later) / 30,
-               t0 + 1.5 * p["tScale"]))
-    base = tmp_path / "postProcessing" / "particlesHardSphere"
-    for n, alpha, t in writes:
+               t0 + 1.5 * p["tScale"], 24, 11))
+    base = case / "postProcessing" / "particlesHardSphere"
+    rows = [f"{t0:.17g} 0 0"]
+    for n, alpha, t, ncol, nwall in writes:
         d = base / f"{t:.12g}"
         d.mkdir(parents=True)
-        rows = "\n".join(f"{(i + 0.5) / nb:.6g} {float(a):.17g}"
-                         for i, a in enumerate(alpha))
+        prof = "\n".join(f"{(i + 0.5) / nb:.6g} {float(a):.17g}"
+                          for i, a in enumerate(alpha))
         (d / "profiles.dat").write_text(
             f"# Profiles of cloud particles along (0 1 0), {n} steps "
-            f"sampled\n# x alpha\n{rows}\n")
+            f"sampled\n# x alpha\n{prof}\n")
+        rows.append(f"{t:.17g} {ncol} {nwall}")
+    if with_stats:
+        d = base / f"{t0:.12g}"
+        d.mkdir(parents=True, exist_ok=True)
+        (d / "stats.dat").write_text(
+            "# Hard-sphere statistics of cloud particles\n# Time nCol nWall"
+            "\n" + "\n".join(rows) + "\n")
+    return t0
+
+
+def test_concentration_between_writes(tmp_path):
+    """concentration_history undoes the running average of profiles.dat
+    (write_dispersion): near-wall over centre 1 and then 3 (hand values),
+    over T* from the release to each write; with a span of 1 T* the
+    first write is passed over and the one interval from the release
+    holds all 30 steps: (10 + 20 x 3) / 30 = 7/3. dispersion_history
+    adds the rates: 4 and 20 collisions over 0.5 and 1 T* are 8 and 20
+    per T*, times s^2 = (6e6/N)^2; 1 and 10 wall impacts are 2 and 10 per
+    T*, over N particles."""
+    import channel
+    channel_regime()
+    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    p = channel.preset("smoke")
+    t0 = write_dispersion(p, tmp_path)
     h = regime.concentration_history(p, tmp_path)
     T0 = t0 / p["tScale"]
     assert [x["T0"] - T0 for x in h] == pytest.approx([0.0, 0.5])
@@ -88,3 +113,76 @@ def test_concentration_between_writes(tmp_path):
     # the last write's running average alone: (10 + 20 x 3) / 30 = 7/3
     assert regime.concentration(p, tmp_path)["nearWallOverCentre"] == \
         pytest.approx(7 / 3)
+    coarse = regime.concentration_history(p, tmp_path, span=1.0)
+    assert [v - T0 for x in coarse for v in (x["T0"], x["T1"])] == \
+        pytest.approx([0.0, 1.5])
+    assert coarse[0]["nearWallOverCentre"] == pytest.approx(7 / 3)
+    N = p["nParticles"]
+    s2 = (6e6 / N)**2
+    r = regime.dispersion_history(p, tmp_path)
+    assert [x["fColScaled"] for x in r] == pytest.approx([8 * s2, 20 * s2])
+    assert [x["wallImpacts_per_particle_T"] for x in r] == \
+        pytest.approx([2 / N, 10 / N])
+
+
+def test_dispersion_history_without_readable_stats(tmp_path):
+    """No stats.dat, or one whose last row is being written (a live run):
+    the concentration history alone, no rates."""
+    import channel
+    channel_regime()
+    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    p = channel.preset("smoke")
+    write_dispersion(p, tmp_path, with_stats=False)
+    h = regime.dispersion_history(p, tmp_path)
+    assert len(h) == 2 and not any("fColScaled" in x for x in h)
+    f = next((tmp_path / "postProcessing" / "particlesHardSphere").glob(
+        "*/profiles.dat")).with_name("stats.dat")
+    f.write_text("# Time nCol nWall\n0 0 0\n1e-3 4")
+    assert not any("fColScaled" in x
+                   for x in regime.dispersion_history(p, tmp_path))
+
+
+def write_time(case, t, complete=True):
+    d = case / f"{t:.12g}"
+    (d / "uniform").mkdir(parents=True)
+    (d / "U").write_text("FoamFile {}\n" + (END if complete else "(1 2"))
+    (d / "uniform" / "time").write_text("value " + str(t) + ";" + END)
+
+
+def test_progress_of_an_unfinished_variant(tmp_path):
+    """An unfinished variant: unladen done (writes at 0 and its end),
+    release done and the dispersion written 0.5 and 1.5 T* after the
+    release, a third write cut off: the last complete writes in T* are
+    the unladen end and release + 1.5 (the cut-off write is not
+    counted), the stages' ends and the markers as written; the history
+    of the dispersion folder comes with it. A variant with no folder
+    has no progress."""
+    import channel
+    channel_regime()
+    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    p = channel.preset("regime64")
+    base = tmp_path / "regime64"
+    un = base / "unladen"
+    tu = channel.end_time(p, "unladen")
+    write_time(un, 0.0)
+    write_time(un, tu)
+    (un / "done.unladen").write_text("1\n")
+    disp = base / "C1" / "dispersion"
+    t0 = write_dispersion(p, disp)
+    for T in (0.5, 1.5):
+        write_time(disp, t0 + T * p["tScale"])
+    write_time(disp, t0 + 2.5 * p["tScale"], complete=False)
+    (disp / "done.release").write_text("1\n")
+    g = regime.progress("regime64", tmp_path)
+    T0 = tu / p["tScale"]
+    assert set(g["stages"]) == {"unladen", "C1/dispersion"}
+    assert g["stages"]["unladen"]["lastWrite_Tstar"] == pytest.approx(T0)
+    assert g["stages"]["unladen"]["done"] == ["unladen"]
+    assert g["stages"]["C1/dispersion"]["lastWrite_Tstar"] == \
+        pytest.approx(T0 + 1.5)
+    assert g["stages"]["C1/dispersion"]["end_Tstar"] == pytest.approx(
+        sum(p[k] for k in ("unladen", "release", "dispersion")))
+    assert g["stages"]["C1/dispersion"]["done"] == ["release"]
+    assert [x["nearWallOverCentre"] for x in g["history"]] == \
+        pytest.approx([1, 3])
+    assert regime.progress("regime48", tmp_path) is None

@@ -352,8 +352,9 @@ def test_regime_study_post(smoke_runs, tmp_path):
     runs = smoke_runs[2] / "runs"
     res = regime.run_post(runs, tmp_path, ["smoke", "regime32"])
     smoke, missing = res["variants"]
-    assert missing["result"] is None
-    assert "regime32" in (tmp_path / "regime.txt").read_text()
+    assert missing["result"] is None and missing["progress"] is None
+    assert f"regime32       not run in {runs / 'regime32'}" in \
+        (tmp_path / "regime.txt").read_text()
     # no grid variant finished: the trend to 128^3 is n/r, not guessed
     assert res["gridTrend"]["variants"] == []
     assert res["gridTrend"]["EAM"]["f_col_scaled"] is None
