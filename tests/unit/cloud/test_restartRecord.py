@@ -5,8 +5,8 @@ Each case is a written time of the agglomerating box gas with files
 removed as a killed write or a careless hand would leave them; the
 expectation is a fatal error naming what is missing, never a run that
 continues with fewer particles, primaries or counters. The intact time
-restarts (test_hardSphereCloud.test_restart_equals_continuous_run checks
-that it continues exactly)."""
+restarts (test_cloudReproducibility.test_restart_equals_continuous_run
+checks that it continues exactly)."""
 
 import re
 import shutil

@@ -1,0 +1,88 @@
+"""The scripted boxes of the cloud tests (tests/unit/cloud): 12 um
+quartz primaries in a 100 um box, a pair approaching at a given angle,
+a hard-sphere gas and an agglomerating gas, and the particle state of a
+written cloud. The box cases themselves are aggloTools.boxcase."""
+
+import math
+
+import numpy as np
+
+from aggloTools import placement
+from aggloTools.boxcase import box_case
+from aggloTools.cloud import read_cloud
+
+STATE = ("U", "omega", "d", "rho", "nPrimary", "origId", "origProcId",
+         "lastPartnerId", "lastContactTime")
+
+
+def cloud_state(case, time):
+    """The particle state of a written cloud (numpy arrays)."""
+    return read_cloud(case, time, names=STATE)
+
+
+D = 12e-6
+L = 1e-4
+C = 0.5 * L
+
+
+def pair_particles(v, theta_deg, gap=1e-6, centre=(C, C, C), spin=None):
+    """Two 12 um primaries approaching along x with relative speed v; the
+    impact parameter gives the angle theta between -u_r and the contact
+    normal."""
+    b = D * math.sin(math.radians(theta_deg))
+    X = D * math.cos(math.radians(theta_deg)) + gap
+    cx, cy, cz = centre
+    p1 = dict(x=(cx - 0.5 * X, cy - 0.5 * b, cz), U=(0.5 * v, 0, 0), id=0)
+    p2 = dict(x=(cx + 0.5 * X, cy + 0.5 * b, cz), U=(-0.5 * v, 0, 0), id=1)
+    if spin:
+        p1["omega"], p2["omega"] = spin
+    return [p1, p2]
+
+
+def gas_particles(N, Lbox, phi, sigma, seed):
+    """N equal spheres of volume fraction phi, uniform and non-overlapping
+    (gap 5 % of d) in the periodic box, with Gaussian velocities of
+    standard deviation sigma and zero mean."""
+    rng = np.random.default_rng(seed)
+    d = Lbox * (6 * phi / (math.pi * N)) ** (1 / 3)
+    xs = placement.place(N, 1.05 * d, (0, 0, 0), (Lbox,) * 3, (Lbox,) * 3,
+                         rng)
+    U = rng.normal(0, sigma, (N, 3))
+    U -= U.mean(axis=0)
+    parts = [dict(x=tuple(x), U=tuple(u), d=d, rho=2200, id=i)
+             for i, (x, u) in enumerate(zip(xs, U))]
+    return parts, d, U
+
+
+def gas_kernel(en):
+    return ("    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.6e9;"
+            " delta0 2e-10; rho0 2200; }\n"
+            f"    particleCollision {{ en {en}; et 1; muSt 0; muKin 0; }}\n"
+            "    agglomerationModel none;\n    walls {}\n")
+
+
+def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1)):
+    """300 quartz primaries at about 2 mm/s in a box periodic in x and z,
+    walls in y: collisions, agglomerates (under EAM and MAM: seed 13) and
+    wall impacts within 40 steps."""
+    rng = np.random.default_rng(13)
+    Lb, N = 2e-4, 300
+    xs = placement.place(N, 1.2 * D, (0, 0.6 * D, 0), (Lb, Lb - 0.6 * D, Lb),
+                         (Lb, None, Lb), rng)
+    U = rng.normal(0, 1.5e-3, (N, 3))
+    parts = [dict(x=tuple(x), U=tuple(u), id=i)
+             for i, (x, u) in enumerate(zip(xs, U))]
+    box_case(case_dir, L=(Lb, Lb, Lb), n=(6, 6, 6),
+             kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
+             end_time=end_time, write_interval=write_interval,
+             agglomeration="EAM", decompose=decompose)
+
+
+def add_hard_sphere_entries(case_dir, entries):
+    """Add entries to the hardSphereCoeffs dictionary of a box case (before
+    its agglomerationModel entry)."""
+    f = case_dir / "constant" / "kinematicCloudProperties"
+    text = f.read_text()
+    old = "agglomerationModel "
+    assert old in text
+    f.write_text(text.replace(old, entries + " " + old, 1))
