@@ -86,3 +86,16 @@ def add_hard_sphere_entries(case_dir, entries):
     old = "agglomerationModel "
     assert old in text
     f.write_text(text.replace(old, entries + " " + old, 1))
+
+
+#: A head-on pair at 1 mm/s each, 20 um apart, in the middle of the box
+PAIR = [dict(x=(0.4 * L, 0.5 * L, 0.5 * L), U=(1e-3, 0, 0), id=0),
+        dict(x=(0.6 * L, 0.5 * L, 0.5 * L), U=(-1e-3, 0, 0), id=1)]
+
+
+def assert_fatal_naming(res, word):
+    """A run that stopped with a fatal error whose message names word."""
+    assert res.returncode != 0
+    assert "FOAM FATAL" in res.stdout, res.stdout[-2000:]
+    assert word in res.stdout.split("FOAM FATAL", 1)[1], \
+        res.stdout[-2000:]
