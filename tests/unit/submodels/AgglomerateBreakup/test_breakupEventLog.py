@@ -20,9 +20,8 @@ import pytest
 from aggloTools import boxcase, breakuplog
 from aggloTools.runner import CommandError, foam_bin, run
 from aggloTools.stats import stats_rows
-from test_stressThresholdBreakup import (BREAKUP, GAMMA_CRIT, H, L_C, N_C,
-                                         NU_F, RHO_F, kernel, size_density,
-                                         tensile_strength)
+from breakupCases import (BREAKUP, GAMMA_CRIT, H, L_C, N_C, NU_F, RHO_F,
+                          kernel, size_density, tensile_strength)
 
 STEPS, WRITE = 6, 2
 
