@@ -160,6 +160,11 @@ def plots(res, out):
     ax[2].set_xlabel(r"wall-normal position $y/\delta$ [-]")
     ax[2].set_ylabel("particle volume fraction [-]")
     ax[2].set_title("at the start of agglomeration", fontsize=9)
+    if not done:
+        for a_ in ax[:3]:
+            a_.text(0.5, 0.5, "no variant has finished yet",
+                    transform=a_.transAxes, ha="center", va="center",
+                    color="0.4")
     for k, (key, label) in enumerate((
             ("nearWallOverCentre", "near-wall / centre volume fraction [-]"),
             ("fColScaled", r"collisions per T* $\times s^2$ [1/T*]"),
