@@ -69,6 +69,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "basicAgglomeratingCloud.H"
+#include "timeNamePrecision.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
