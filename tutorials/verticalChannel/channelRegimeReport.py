@@ -89,7 +89,8 @@ def _where(v):
                      f"{x['end_Tstar']:.0f}"
                      + (f" ({', '.join(x['done'])} done)" if x["done"]
                         else ""))
-    return "not finished: " + "; ".join(parts) + " (interim below)"
+    return ("not finished: " + "; ".join(parts)
+            + (" (interim below)" if g["history"] else ""))
 
 
 def _history_lines(res, gap=40.0):
