@@ -115,7 +115,7 @@ def concentration_history(p, ddir, span=0.0):
     return out
 
 
-def dispersion_history(p, ddir, span=0.0):
+def dispersion_history(p, ddir):
     """concentration_history with, per interval, the rates of the one
     cloud of the release and dispersion stages from its stats.dat
     (cumulative counters, interpolated at the interval's ends):
@@ -125,7 +125,7 @@ def dispersion_history(p, ddir, span=0.0):
     contacts as the concentration builds up, not the window's f_col.
     A stats.dat that cannot be read yet (a run writing it) leaves the
     rates out."""
-    out = concentration_history(p, ddir, span)
+    out = concentration_history(p, ddir)
     try:
         st = read_stats(ddir, "particles")
     except (FileNotFoundError, ValueError):
@@ -153,7 +153,7 @@ STAGE_DIRS = (("unladen", "unladen", ("unladen",)),
               ("C1/agglomeration", "agglomeration", ("agglomeration",)))
 
 
-def progress(name, runs=None, span=0.0):
+def progress(name, runs=None):
     """Where a variant stands that has not finished (an interim, not the
     study's window): per stage folder of C1 that exists, its last
     complete write and the stage's end (T* from the start of the
@@ -178,7 +178,7 @@ def progress(name, runs=None, span=0.0):
         return None
     ddir = base / "C1" / "dispersion"
     return {"stages": stages,
-            "history": (dispersion_history(p, ddir, span)
+            "history": (dispersion_history(p, ddir)
                         if ddir.is_dir() else [])}
 
 
