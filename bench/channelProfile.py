@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Where the channel step's time goes: the samples of a `perf record` of
 a solver run by part of the step (fluid, LES model, cloud, start-up and
 writes) and by function, and their Markdown table
