@@ -10,6 +10,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "../testHelpers.H"
+#include <tuple>
+#include <vector>
 
 using namespace Foam;
 using namespace aggloTest;
@@ -40,6 +42,34 @@ TEST(ReferenceIntermediates, EAMRows3_5_11)
 }
 
 
+namespace
+{
+
+//- Expect the named intermediate values of the collision of p1 and p2
+//  under the kernel of dict, each within its relative tolerance
+void expectValues
+(
+    const dictionary& dict,
+    const hardSphereState& p1,
+    const hardSphereState& p2,
+    const std::vector<std::tuple<std::string, scalar, scalar>>& expected
+)
+{
+    const hardSphereCollisionKernel kernel(dict);
+    const collisionOutcome out(kernel.collide(p1, p2));
+    for (const auto& e : expected)
+    {
+        EXPECT_TRUE
+        (
+            near(value(kernel, out, word(std::get<0>(e))), std::get<1>(e),
+                 std::get<2>(e))
+        ) << std::get<0>(e);
+    }
+}
+
+} // End anonymous namespace
+
+
 TEST(ReferenceIntermediates, Section12_4HeadOn1mmps)
 {
     hardSphereState p1, p2;
@@ -50,48 +80,33 @@ TEST(ReferenceIntermediates, Section12_4HeadOn1mmps)
     EXPECT_TRUE(near(pair.mHat(), 9.95257e-13, 1e-5));
     EXPECT_TRUE(near(pair.fna(0.97), 1.97e-3, 1e-12));
 
-    {
-        const dictionary dict(kernelDict("MAM"));
-        const hardSphereCollisionKernel kernel(dict);
-        const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(value(kernel, out, "tStar"), 4.74389e-8, 1e-5));
-        EXPECT_TRUE(near(value(kernel, out, "fnc"), 0.10847, 1e-4));
-        EXPECT_TRUE(near(value(kernel, out, "fncStar"), 8.0701e-4, 1e-4));
-    }
-    {
-        const dictionary dict
-        (
-            kernelDict("MAM", "CSM", "MAMCoeffs { closure hertzRebound; }")
-        );
-        const hardSphereCollisionKernel kernel(dict);
-        const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(value(kernel, out, "fnc"), 0.10799, 1e-4));
-        EXPECT_TRUE(near(value(kernel, out, "fncStar"), 3.2894e-4, 1e-4));
-    }
-    {
-        const dictionary dict(kernelDict("EAM"));
-        const hardSphereCollisionKernel kernel(dict);
-        const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(value(kernel, out, "dEvdW"), 1.09533e-18, 1e-5));
-    }
+    expectValues
+    (
+        kernelDict("MAM"), p1, p2,
+        {{"tStar", 4.74389e-8, 1e-5}, {"fnc", 0.10847, 1e-4},
+         {"fncStar", 8.0701e-4, 1e-4}}
+    );
+    expectValues
+    (
+        kernelDict("MAM", "CSM", "MAMCoeffs { closure hertzRebound; }"),
+        p1, p2,
+        {{"fnc", 0.10799, 1e-4}, {"fncStar", 3.2894e-4, 1e-4}}
+    );
+    expectValues(kernelDict("EAM"), p1, p2, {{"dEvdW", 1.09533e-18, 1e-5}});
 
     // d = 4 um
     referencePair(1e-3, 0, 0, 0, p1, p2, 4e-6);
-    {
-        const dictionary dict(kernelDict("MAM"));
-        const hardSphereCollisionKernel kernel(dict);
-        const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(value(kernel, out, "tStar"), 1.5813e-8, 1e-4));
-        EXPECT_TRUE(near(value(kernel, out, "fnc"), 0.32541, 1e-4));
-        EXPECT_TRUE(near(value(kernel, out, "fncStar"), 2.42104e-3, 1e-5));
-    }
-    {
-        const dictionary dict(kernelDict("EAM"));
-        const hardSphereCollisionKernel kernel(dict);
-        const collisionOutcome out(kernel.collide(p1, p2));
-        EXPECT_TRUE(near(value(kernel, out, "dEvdW"), 1.21704e-19, 1e-5));
-        EXPECT_TRUE(near(value(kernel, out, "EkinPlus"), 1.73414e-20, 1e-5));
-    }
+    expectValues
+    (
+        kernelDict("MAM"), p1, p2,
+        {{"tStar", 1.5813e-8, 1e-4}, {"fnc", 0.32541, 1e-4},
+         {"fncStar", 2.42104e-3, 1e-5}}
+    );
+    expectValues
+    (
+        kernelDict("EAM"), p1, p2,
+        {{"dEvdW", 1.21704e-19, 1e-5}, {"EkinPlus", 1.73414e-20, 1e-5}}
+    );
 }
 
 
