@@ -30,6 +30,7 @@ from pathlib import Path
 
 import channel
 import channelRegimeTrend as trend
+import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import (MODELS, PAPER, analyse_variant, progress,
                                    runs_base)
 from channelRegimeReport import plots, table
@@ -60,6 +61,7 @@ def run_post(runs=None, out=None, names=None):
             v["progress"] = progress(name, runs)
         res["variants"].append(v)
     res["gridTrend"] = trend.grid_trend(res, MODELS, PAPER)
+    res["verdict"] = verdict.verdict(res, MODELS)
     (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")
     (out / "regime.txt").write_text(table(res))
     plots(res, out)

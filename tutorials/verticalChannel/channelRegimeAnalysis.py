@@ -186,26 +186,33 @@ def nprocs(d):
     return len(list(d.glob("processor*"))) or 1
 
 
+def log_times(log):
+    """CPU and wall-clock seconds of one solver log: the last
+    ExecutionTime and ClockTime of each segment, summed (a resumed run,
+    -append, counts from zero again)."""
+    cpu = wall = 0.0
+    seg = (0.0, 0.0)
+    for line in log.read_text(errors="replace").splitlines():
+        if line.startswith("ExecutionTime = "):
+            w = line.split()
+            x = (float(w[2]), float(w[6]))
+            if x[0] < seg[0]:
+                cpu, wall = cpu + seg[0], wall + seg[1]
+            seg = x
+    return cpu + seg[0], wall + seg[1]
+
+
 def stage_times(base):
-    """Wall-clock seconds of each stage (the done.<stage> markers) and the
-    CPU seconds of the solver (the last ExecutionTime of each log, per
-    rank), summed over the C1 stages of a preset's runs."""
+    """Per C1 stage folder (unladen, C1/dispersion with the release,
+    C1/agglomeration), the solver's wall-clock seconds and, summed over
+    them, its CPU seconds (all ranks), every resumed segment counted."""
     wall, cpu = {}, 0.0
     for d in [base / "unladen"] + sorted((base / "C1").glob("*")):
-        for m in d.glob("done.*"):
-            wall[f"{d.name}/{m.name[5:]}"] = float(m.read_text())
         log = d / "log.aggloPimpleFoam"
         if log.is_file():
-            # a resumed run (-append) counts from zero again: each segment
-            # adds its last value
-            seg = 0.0
-            for line in log.read_text(errors="replace").splitlines():
-                if line.startswith("ExecutionTime = "):
-                    x = float(line.split()[2])
-                    if x < seg:
-                        cpu += seg * nprocs(d)
-                    seg = x
-            cpu += seg * nprocs(d)
+            c, w = log_times(log)
+            cpu += c * nprocs(d)
+            wall[str(d.relative_to(base))] = w
     return {"wall_s": wall, "wallTotal_s": sum(wall.values()),
             "cpu_s": cpu}
 

@@ -5,6 +5,7 @@ regime.png."""
 import numpy as np
 
 import channelRegimeTrend as trend
+import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import MODELS, PAPER
 
 
@@ -63,9 +64,12 @@ def table(res):
               "impacts per particle and T*; c_w/c_0: particle volume "
               "fraction next to the walls over the centre's at the start "
               "of the agglomeration phase; wall h, cpu h: the C1 stages' "
-              "wall-clock and CPU hours (all ranks)."]
+              "wall-clock and CPU hours (all ranks; the solver's, every "
+              "resumed segment counted)."]
     if "gridTrend" in res:
         lines += [""] + trend.lines(res["gridTrend"], MODELS)
+    if "verdict" in res:
+        lines += [""] + verdict.lines(res["verdict"], MODELS)
     lines += _history_lines(res)
     return "\n".join(lines) + "\n"
 

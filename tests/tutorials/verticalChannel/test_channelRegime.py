@@ -186,3 +186,33 @@ def test_progress_of_an_unfinished_variant(tmp_path):
     assert [x["nearWallOverCentre"] for x in g["history"]] == \
         pytest.approx([1, 3])
     assert regime.progress("regime48", tmp_path) is None
+
+
+def test_stage_times_count_every_resumed_segment(tmp_path):
+    """A stage resumed once (-append: the second segment counts from zero
+    again) on 2 ranks and a serial stage: each folder's wall-clock is the
+    sum of its segments' last ClockTime, the CPU the sum of the last
+    ExecutionTimes times the ranks (hand sums)."""
+    channel_regime()
+    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+
+    def log(d, segments, ranks=1):
+        d.mkdir(parents=True)
+        for k in range(ranks):
+            (d / f"processor{k}").mkdir()
+        text = ""
+        for seg in segments:
+            text += "Create time\n"
+            for cpu, wall in seg:
+                text += (f"ExecutionTime = {cpu} s  ClockTime = {wall} s"
+                         "\n\n")
+        (d / "log.aggloPimpleFoam").write_text(text)
+
+    base = tmp_path / "regime64"
+    log(base / "unladen", [[(1.5, 2), (3.0, 4)]])
+    log(base / "C1" / "dispersion",
+        [[(10.0, 11), (20.0, 22)], [(5.0, 6), (7.5, 9)]], ranks=2)
+    t = regime.stage_times(base)
+    assert t["wall_s"] == {"unladen": 4.0, "C1/dispersion": 31.0}
+    assert t["wallTotal_s"] == 35.0
+    assert t["cpu_s"] == pytest.approx(3.0 + 2 * (20.0 + 7.5))

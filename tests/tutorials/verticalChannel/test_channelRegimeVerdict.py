@@ -1,0 +1,97 @@
+"""The regime study's verdict (channelRegimeVerdict.py): which finished
+variant is in the paper's regime (both models' f_col x s^2 and alpha_f
+within a factor 2 of Table 3's C1), the cheapest affordable one (C1 on 2
+cores, CPU hours / 2, at most 3 h), else the closest and where the grid
+trend's band at 128^3 lies, on hand-made results."""
+
+import math
+
+import pytest
+
+from aggloTools.runner import tutorial_module
+
+
+@pytest.fixture(scope="module")
+def vd():
+    return tutorial_module("verticalChannel", "channelRegimeVerdict")
+
+
+def variant(name, col, alpha, cpu_h, mam=None):
+    """A finished variant: EAM's factors to the paper col and alpha, MAM's
+    the same unless given, cpu_h CPU hours of its C1."""
+    mc, ma = mam or (col, alpha)
+    return {"name": name, "result": {
+        "models": {"EAM": {"colFactorToPaper": col,
+                           "alphaFactorToPaper": alpha},
+                   "MAM": {"colFactorToPaper": mc,
+                           "alphaFactorToPaper": ma}},
+        "times": {"cpu_s": cpu_h * 3600}}}
+
+
+def test_factor_and_cost_of_a_variant(vd):
+    """Worst of max(x, 1/x) over the four factors, where it is; hours on 2
+    cores = CPU hours / 2."""
+    j = vd.judge_variant(variant("a", 0.4, 1.5, 5.0, mam=(0.9, 1.9)),
+                         ("EAM", "MAM"))
+    assert j["worst"] == pytest.approx(2.5)
+    assert j["worstAt"] == "EAM f_col x s^2"
+    assert not j["inRegime"]
+    assert j["c1Hours2Cores"] == pytest.approx(2.5) and j["affordable"]
+    j = vd.judge_variant(variant("b", 0.5, 2.0, 6.2), ("EAM", "MAM"))
+    assert j["worst"] == pytest.approx(2.0) and j["inRegime"]
+    assert j["c1Hours2Cores"] == pytest.approx(3.1)
+    assert not j["affordable"]
+    j = vd.judge_variant(variant("c", 1.0, None, 1.0), ("EAM", "MAM"))
+    assert math.isinf(j["worst"]) and j["worstAt"] == "EAM alpha_f"
+
+
+def test_the_cheapest_affordable_variant_in_the_regime(vd):
+    res = {"variants": [
+        variant("small", 0.1, 30.0, 0.3),
+        variant("regime48", 0.7, 1.6, 5.0),     # 2.5 h
+        variant("regime64", 1.1, 1.2, 5.8),     # 2.9 h
+        variant("regime96", 1.0, 1.0, 40.0),    # in, not affordable
+        {"name": "regime32n3", "result": None}]}
+    v = vd.verdict(res, ("EAM", "MAM"))
+    assert v["preset"] == "regime48" and v["closest"] is None
+    assert [j["name"] for j in v["variants"]] == \
+        ["small", "regime48", "regime64", "regime96"]
+    text = "\n".join(vd.lines(v, ("EAM", "MAM")))
+    assert "the preset in the regime: regime48" in text
+    assert "regime96       worst factor 1 (EAM f_col x s^2), C1 on 2 " \
+        "cores 20.00 h: in the regime, not affordable" in text
+
+
+def test_none_in_the_regime_the_closest_and_the_trend(vd):
+    """No variant within the factor: the smallest worst factor is the
+    closest, and the trend's bands at 128^3 are classed against [0.5, 2]
+    times the paper's value."""
+    fit = (lambda lo, hi: {"low": lo, "high": hi, "paper": 10.0,
+                           "value": (lo * hi)**0.5})
+    res = {"variants": [variant("regime32", 0.08, 30.0, 3.0),
+                        variant("regime64", 0.3, 4.0, 8.0, mam=(0.35, 6))],
+           "gridTrend": {
+               "EAM": {"f_col_scaled": fit(6.0, 15.0),
+                       "alpha_f": fit(15.0, 40.0)},
+               "MAM": {"f_col_scaled": fit(21.0, 30.0), "alpha_f": None}}}
+    v = vd.verdict(res, ("EAM", "MAM"))
+    assert v["preset"] is None and v["closest"] == "regime64"
+    assert v["trendAt128"] == {
+        "EAM": {"f_col_scaled": "within", "alpha_f": "overlaps"},
+        "MAM": {"f_col_scaled": "outside", "alpha_f": None}}
+    text = "\n".join(vd.lines(v, ("EAM", "MAM")))
+    assert "no finished variant is in the regime; closest: regime64" \
+        in text
+    assert "worst factor 6 (MAM alpha_f)" in text
+    assert ("EAM f_col x s^2 within; EAM alpha_f overlaps; MAM f_col x "
+            "s^2 outside; MAM alpha_f n/r") in text
+
+
+def test_in_the_regime_but_none_affordable(vd):
+    v = vd.verdict({"variants": [variant("regime64", 1.2, 0.8, 30.0)]},
+                   ("EAM",))
+    assert v["preset"] is None
+    assert "in the regime, none affordable: regime64" in \
+        "\n".join(vd.lines(v, ("EAM",)))
+    assert vd.lines(vd.verdict({"variants": []}, ("EAM",)),
+                    ("EAM",))[1] == "  no variant has finished"
