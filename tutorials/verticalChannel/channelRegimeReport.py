@@ -6,7 +6,7 @@ import numpy as np
 
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
-from channelRegimeAnalysis import MODELS, PAPER
+from channelRegimeAnalysis import MODELS, PAPER, QUANTILES
 
 
 def _g(v, fmt=".3g"):
@@ -125,10 +125,11 @@ def _history_lines(res, gap=40.0):
 
 def plots(res, out):
     """regime.png: f_col x s^2 and alpha_f of the finished variants, the
-    concentration profile at the start of agglomeration, and over the
+    concentration profile at the start of agglomeration; over the
     release and dispersion stages of every variant that has them (dashed:
     not finished) the near-wall peak, the collision rate and the wall
-    impacts between writes."""
+    impacts between writes; the distributions of |u_n| and of the wall
+    distance at contact, and the grid trend against the paper."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -136,7 +137,7 @@ def plots(res, out):
     grown = [v for v in res["variants"] if _history(v)]
     if not done and not grown:
         return
-    fig, axs = plt.subplots(2, 3, figsize=(15, 8.4))
+    fig, axs = plt.subplots(3, 3, figsize=(15, 12.6))
     ax = axs.ravel()
     xs = np.arange(len(done))
     for k, m in enumerate(MODELS):
@@ -193,9 +194,85 @@ def plots(res, out):
                       lw=0.8, label=None if k else
                       "paper C1, window (EAM, MAM)")
     ax[4].set_yscale("log")
+    for a_, key, label in (
+            (ax[6], "un_mm_s", r"normal approach speed $|u_n|$ [mm/s]"),
+            (ax[7], "wallDistance_delta",
+             r"wall distance at contact $y/\delta$ [-]")):
+        _contact_panel(a_, done, key, label)
+    _trend_panel(ax[8], res)
     for a_ in ax[2:]:
         if a_.get_legend_handles_labels()[0]:
             a_.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(out / "regime.png", dpi=110)
     plt.close(fig)
+
+
+def _contact_panel(ax, done, key, label):
+    """The window's contacts of each finished variant and model: 10-90 %
+    (thin) and 25-75 % (thick) of a distribution and its median, all
+    contacts (filled) and the agglomerating ones (open)."""
+    q = [QUANTILES.index(x) for x in (0.1, 0.25, 0.5, 0.75, 0.9)]
+    for i, v in enumerate(done):
+        for k, m in enumerate(MODELS):
+            ct = v["result"]["models"][m]["contacts"] or {}
+            for j, (suffix, what) in enumerate((("", "all"),
+                                                ("_agg", "agglomerating"))):
+                d = ct.get(key + suffix)
+                if not d:
+                    continue
+                x = i + 0.15 * (2 * k + j) - 0.225
+                ax.plot([x, x], [d[q[0]], d[q[4]]], color=f"C{k}", lw=0.8)
+                ax.plot([x, x], [d[q[1]], d[q[3]]], color=f"C{k}", lw=3)
+                ax.plot(x, d[q[2]], "o", color=f"C{k}",
+                        mfc="white" if j else f"C{k}",
+                        label=f"{m}, {what}" if i == 0 else None)
+    ax.set_xticks(range(len(done)))
+    ax.set_xticklabels([v["name"] for v in done], rotation=30, fontsize=8)
+    ax.set_xlim(-0.5, max(len(done), 1) - 0.5)
+    ax.set_yscale("log")
+    ax.set_ylabel(label)
+    ax.set_title("contacts in the window: 10/25/50/75/90 %", fontsize=9)
+
+
+def _trend_panel(ax, res):
+    """f_col x s^2 and alpha_f over the paper's, per model, of the grid
+    variants at the paper's phases, with the fitted power laws to 128^3
+    and their 68 % bands there; shaded: within the verdict's factor."""
+    done = {v["name"]: v["result"] for v in res["variants"] if v["result"]}
+    fits = res.get("gridTrend") or {}
+    for k, m in enumerate(MODELS):
+        for q, key, mk, name in (
+                ("f_col_scaled", "colFactorToPaper", "o", r"$f_{col}s^2$"),
+                ("alpha_f", "alphaFactorToPaper", "s", r"$\alpha_f$")):
+            pts = [(n, done[v]["models"][m][key])
+                   for v, n in trend.GRID_VARIANTS
+                   if v in done and done[v]["models"][m][key]]
+            if pts:
+                ax.plot(*zip(*pts), mk, color=f"C{k}", label=f"{m} {name}")
+            f = fits.get(m, {}).get(q)
+            if f:
+                n = np.geomspace(32, trend.N_PAPER_GRID, 30)
+                ax.plot(n, f["value"] / f["paper"]
+                        * (n / trend.N_PAPER_GRID)**f["b"], color=f"C{k}",
+                        ls="-" if q == "f_col_scaled" else "--", lw=0.8)
+                ax.errorbar(trend.N_PAPER_GRID * (1.02 + 0.02 * k),
+                            f["factorToPaper"],
+                            [[f["factorToPaper"] - f["low"] / f["paper"]],
+                             [f["high"] / f["paper"] - f["factorToPaper"]]],
+                            fmt=mk, mfc="white", color=f"C{k}", capsize=3)
+    ax.axhline(1, color="k", lw=0.8)
+    ax.axhspan(1 / verdict.FACTOR, verdict.FACTOR, color="0.9", zorder=0,
+               label=f"within a factor {verdict.FACTOR:g}")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xticks([32, 48, 64, 128])
+    ax.set_xticklabels(["32", "48", "64", "128"])
+    ax.set_xticks([], minor=True)
+    ax.set_xlabel("cells per direction n [-] (the paper: 128)")
+    ax.set_ylabel("sim / paper, C1 [-]")
+    ax.set_title("grid trend (paper's phases), extrapolated", fontsize=9)
+    if not done:
+        ax.text(0.5, 0.5, "no variant has finished yet",
+                transform=ax.transAxes, ha="center", va="center",
+                color="0.4")
