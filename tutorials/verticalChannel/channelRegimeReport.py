@@ -266,6 +266,7 @@ def _trend_panel(ax, res):
                label=f"within a factor {verdict.FACTOR:g}")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.set_xlim(28, 150)
     ax.set_xticks([32, 48, 64, 128])
     ax.set_xticklabels(["32", "48", "64", "128"])
     ax.set_xticks([], minor=True)
