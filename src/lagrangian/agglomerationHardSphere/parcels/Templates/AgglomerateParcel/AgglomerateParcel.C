@@ -390,5 +390,6 @@ void Foam::AgglomerateParcel<ParcelType>::transformProperties
 // * * * * * * * * * * * * * * IOStream operators  * * * * * * * * * * * * * //
 
 #include "AgglomerateParcelIO.C"
+#include "AgglomerateParcelPool.C"
 
 // ************************************************************************* //

@@ -95,7 +95,7 @@ void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
     );
     cells.clear();
 
-    // The heap blocks in address order: slot k receives the contents of
+    // The slots in address order: slot k receives the contents of
     // parcel order[k], which sits in slot from[k]
     labelList byAddress(identity(n));
     std::sort
@@ -134,7 +134,7 @@ void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
     parcels.clear();
 
     // Move the contents along the cycles of the permutation, through one
-    // parcel-sized buffer: a parcel is copied into its new block, the old
+    // parcel-sized buffer: a parcel is copied into its new slot, the old
     // contents destroyed in place
     typename std::aligned_storage
     <
@@ -148,7 +148,7 @@ void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
             continue;
         }
 
-        parcelType* saved = new (&buffer) parcelType(*slots[k]);
+        parcelType* saved = ::new (&buffer) parcelType(*slots[k]);
 
         label j = k;
         while (true)
@@ -158,10 +158,10 @@ void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
             slots[j]->~parcelType();
             if (src == k)
             {
-                new (slots[j]) parcelType(*saved);
+                ::new (slots[j]) parcelType(*saved);
                 break;
             }
-            new (slots[j]) parcelType(*slots[src]);
+            ::new (slots[j]) parcelType(*slots[src]);
             j = src;
         }
 
