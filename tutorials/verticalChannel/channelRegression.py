@@ -195,9 +195,10 @@ COLUMNS = [reg.Column("quantity", "quantity", 44),
 RESOLVES = {
     "smoke": "nothing of the physics: it checks the stages, IO,"
              " decomposition and conservation",
-    "small": "not the paper's regime: C1 f_col x s^2 10-13 times below"
-             " Table 3, alpha_f 20-50 times above, collisions in the"
-             " bulk; only conservation is judged, the rest is reported",
+    "small": "not the paper's regime: in every run so far C1 f_col x"
+             " s^2 10-25 times below Table 3 and alpha_f 20-50 times"
+             " above (sim/paper below), collisions in the bulk; only"
+             " conservation is judged, the rest is reported",
     "medium": "the case ratios but the C4 agglomeration ratios (by the"
               " counts' noise); whether it is in the paper's regime is the"
               " regime study's question",

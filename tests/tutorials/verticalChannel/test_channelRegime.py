@@ -15,8 +15,8 @@ def channel_regime():
     """channelRegime as a module, after the siblings it imports."""
     for sibling in ("channel", "channelPlots", "channelRegression",
                     "channelPost", "channelRegimeTrend",
-                    "channelRegimeAnalysis", "channelRegimeReport",
-                    "channelRegime"):
+                    "channelRegimeVerdict", "channelRegimeAnalysis",
+                    "channelRegimeReport", "channelRegime"):
         module = tutorial_module("verticalChannel", sibling)
     return module
 
