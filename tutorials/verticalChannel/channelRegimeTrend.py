@@ -24,8 +24,8 @@ N_PAPER_GRID = 128
 
 
 def power_law(n, v, sigma, at=N_PAPER_GRID):
-    """Weighted fit of ln v = a + b ln n: {"b", "sigmaB", "at", "value",
-    "low", "high", "chi2", "dof"}, or None with fewer than two usable
+    """Weighted fit of ln v = a + b ln n: {"a", "b", "cov" (of a and b),
+    "sigmaB", "at", "value", "low", "high", "chi2", "dof"}, or None with fewer than two usable
     points (v > 0, sigma > 0)."""
     n, v, s = (np.asarray(x, float) for x in (n, v, sigma))
     ok = (v > 0) & (s > 0)
@@ -41,7 +41,8 @@ def power_law(n, v, sigma, at=N_PAPER_GRID):
         cov = cov * max(1.0, chi2 / dof)
     g = np.array([1.0, math.log(at)])
     ln_v, se = a + b * g[1], math.sqrt(float(g @ cov @ g))
-    return {"b": float(b), "sigmaB": math.sqrt(float(cov[1, 1])),
+    return {"a": float(a), "b": float(b), "cov": cov.tolist(),
+            "sigmaB": math.sqrt(float(cov[1, 1])),
             "at": at, "value": math.exp(ln_v),
             "low": math.exp(ln_v - se), "high": math.exp(ln_v + se),
             "chi2": chi2, "dof": dof}

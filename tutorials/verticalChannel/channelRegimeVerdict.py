@@ -14,9 +14,13 @@ README.md); affordable: at most BUDGET_H hours. The preset: the cheapest
 affordable variant in the regime. Where there is none: the finished
 variant of the smallest worst factor, and, per model and quantity, where
 the trend's 68 % band at 128^3 (channelRegimeTrend) lies against the
-factor: 'within' (all of it), 'overlaps' or 'outside'."""
+factor: 'within' (all of it), 'overlaps' or 'outside', and what the
+regime needs by the trend (channelRegimeNeeds): the grid where each
+value, and all four, lie within the factor, and the cost of a C1 there."""
 
 import math
+
+import channelRegimeNeeds as needs
 
 #: Largest factor to the paper of each of the four values
 FACTOR = 2.0
@@ -76,7 +80,9 @@ def verdict(res, models):
             "preset": preset["name"] if preset else None,
             "closest": (closest["name"] if closest and not preset
                         else None),
-            "trendAt128": at128}
+            "trendAt128": at128,
+            "needs": needs.needs(res.get("gridTrend"), judged, models,
+                                 FACTOR)}
 
 
 def lines(vd, models):
@@ -108,4 +114,5 @@ def lines(vd, models):
                        f"{m} {names[q]} {c or 'n/r'}"
                        for m in models
                        for q, c in vd["trendAt128"][m].items()))
+        out += needs.lines(vd["needs"], models)
     return out

@@ -15,7 +15,8 @@ def channel_regime():
     """channelRegime as a module, after the siblings it imports."""
     for sibling in ("channel", "channelPlots", "channelRegression",
                     "channelPost", "channelRegimeTrend",
-                    "channelRegimeVerdict", "channelRegimeAnalysis",
+                    "channelRegimeNeeds", "channelRegimeVerdict",
+                    "channelRegimeAnalysis",
                     "channelRegimeReport", "channelRegime"):
         module = tutorial_module("verticalChannel", sibling)
     return module

@@ -13,6 +13,8 @@ from aggloTools.runner import tutorial_module
 
 @pytest.fixture(scope="module")
 def vd():
+    for sibling in ("channelRegimeTrend", "channelRegimeNeeds"):
+        tutorial_module("verticalChannel", sibling)
     return tutorial_module("verticalChannel", "channelRegimeVerdict")
 
 
@@ -66,8 +68,12 @@ def test_none_in_the_regime_the_closest_and_the_trend(vd):
     """No variant within the factor: the smallest worst factor is the
     closest, and the trend's bands at 128^3 are classed against [0.5, 2]
     times the paper's value."""
-    fit = (lambda lo, hi: {"low": lo, "high": hi, "paper": 10.0,
-                           "value": (lo * hi)**0.5})
+    def fit(lo, hi):
+        """A law v = c n through (lo hi)^1/2 at 128 with that band."""
+        v = (lo * hi)**0.5
+        return {"low": lo, "high": hi, "paper": 10.0, "value": v,
+                "a": math.log(v / 128), "b": 1.0,
+                "cov": [[0.01, 0.0], [0.0, 0.01]]}
     res = {"variants": [variant("regime32", 0.08, 30.0, 3.0),
                         variant("regime64", 0.3, 4.0, 8.0, mam=(0.35, 6))],
            "gridTrend": {
@@ -85,6 +91,10 @@ def test_none_in_the_regime_the_closest_and_the_trend(vd):
     assert "worst factor 6 (MAM alpha_f)" in text
     assert ("EAM f_col x s^2 within; EAM alpha_f overlaps; MAM f_col x "
             "s^2 outside; MAM alpha_f n/r") in text
+    # What the regime needs follows (channelRegimeNeeds): EAM f_col x s^2
+    # (v = n sqrt(90) / 128) lies within [5, 20] for n 67.5-270
+    assert "what the regime needs" in text
+    assert "EAM f_col x s^2: within for n 67.5-270" in text
 
 
 def test_in_the_regime_but_none_affordable(vd):

@@ -67,7 +67,8 @@ def script(name):
     imports."""
     for sibling in ("channel", "channelPlots", "channelRegression",
                     "channelPost", "channelRegimeTrend",
-                    "channelRegimeVerdict", "channelRegimeAnalysis",
+                    "channelRegimeNeeds", "channelRegimeVerdict",
+                    "channelRegimeAnalysis",
                     "channelRegimeReport"):
         tutorial_module("verticalChannel", sibling)
     return tutorial_module("verticalChannel", name)
