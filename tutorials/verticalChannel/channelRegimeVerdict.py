@@ -108,10 +108,9 @@ def lines(vd, models):
     else:
         out.append(f"  no finished variant is in the regime; closest: "
                    f"{vd['closest']}")
-        names = {"f_col_scaled": "f_col x s^2", "alpha_f": "alpha_f"}
         out.append("  the grid trend's 68 % band at 128^3 against the "
                    "factor: " + "; ".join(
-                       f"{m} {names[q]} {c or 'n/r'}"
+                       f"{m} {needs.NAMES[q]} {c or 'n/r'}"
                        for m in models
                        for q, c in vd["trendAt128"][m].items()))
         out += needs.lines(vd["needs"], models)
