@@ -17,7 +17,9 @@ the factor: from the largest entry to the smallest exit. The cost there:
 a C1 on 2 cores (the verdict's: the CPU hours of its stages over 2) as a
 power law of n through the finished grid variants (least squares in
 ln; none with fewer than two). A power law's extrapolation is a reading
-of the trend, not a run: the README says so where it quotes these."""
+of the trend, not a run: the README says so where it quotes these; a
+reading of a law that the three grids reject (channelRegimeTrend's
+check) says so in its line."""
 
 import math
 
@@ -49,8 +51,9 @@ def band_holds(fit, target):
 
 def window(fit, factor):
     """Where the law lies within the factor of the paper's value:
-    {"enter", "leave", "edge", "enterRange"} (n; None for a law that is
-    flat, b = 0), the edge the law approaches and its 68 % range."""
+    {"enter", "leave", "edge", "enterRange", "rejected"} (n; None for a
+    law that is flat, b = 0), the edge the law approaches, its 68 % range
+    and whether the points reject the law."""
     if not fit or fit["b"] == 0:
         return None
     a, b, p = fit["a"], fit["b"], fit["paper"]
@@ -59,7 +62,8 @@ def window(fit, factor):
     other = p * factor if up else p / factor
     return {"enter": math.exp((math.log(edge) - a) / b),
             "leave": math.exp((math.log(other) - a) / b),
-            "edge": edge, "enterRange": band_holds(fit, edge)}
+            "edge": edge, "enterRange": band_holds(fit, edge),
+            "rejected": fit["p"] is not None and fit["p"] < trend.P_REJECT}
 
 
 def cost_law(judged):
@@ -115,7 +119,8 @@ def lines(nd, models):
                 f"{_n(w['leave'])} (reaches {w['edge']:.3g} at n "
                 f"{_n(w['enter'])}, 68 %: "
                 + (f"{_n(r[0])}-{_n(r[1])})" if r else
-                   "n/r, the slope is within one standard error of 0)"))
+                   "n/r, the slope is within one standard error of 0)")
+                + ("; the grids reject the law" if w["rejected"] else ""))
     c = nd["cost"]
     cost = (f"a C1 on 2 cores ~ n^{c['k']:.2f} through "
             f"{', '.join(c['variants'])}" if c else

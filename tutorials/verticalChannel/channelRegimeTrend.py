@@ -11,7 +11,10 @@ scatter more than their sigmas (dof >= 1). The value at n = 128 with its
 68 % band (one standard error of ln v there), and the factor to the
 paper. With two points the fit passes through both and the band comes
 from their sigmas alone; with one point, or a value of 0, there is no
-trend (None)."""
+trend (None). With three points the law is checked: the probability p of
+a chi^2 at least as large on its degrees of freedom if the points lay on
+a power law with their sigmas; below 5 % the law is rejected, and the
+extrapolation says so."""
 
 import math
 
@@ -21,11 +24,32 @@ import numpy as np
 GRID_VARIANTS = (("regime32", 32), ("regime48", 48), ("regime64", 64))
 #: The paper's grid (cells per direction)
 N_PAPER_GRID = 128
+#: Below this probability of its chi^2 the power law is rejected
+P_REJECT = 0.05
+
+
+def chi2_sf(x, k):
+    """P(chi^2_k >= x), the chi-square survival function for k >= 1
+    degrees of freedom: the regularised upper incomplete gamma Q(k/2,
+    x/2) in closed form (even k: exp(-x/2) sum_{i<k/2} (x/2)^i / i!; odd
+    k: erfc(sqrt(x/2)) plus exp(-x/2) sum_{i=1}^{(k-1)/2} (x/2)^(i-1/2) /
+    Gamma(i+1/2))."""
+    if k < 1 or int(k) != k:
+        raise ValueError(f"{k} degrees of freedom: a positive integer")
+    if x <= 0:
+        return 1.0
+    h = 0.5 * x
+    if k % 2 == 0:
+        return math.exp(-h) * sum(h**i / math.factorial(i)
+                                  for i in range(k // 2))
+    return math.erfc(math.sqrt(h)) + math.exp(-h) * sum(
+        h**(i - 0.5) / math.gamma(i + 0.5) for i in range(1, (k - 1) // 2 + 1))
 
 
 def power_law(n, v, sigma, at=N_PAPER_GRID):
     """Weighted fit of ln v = a + b ln n: {"a", "b", "cov" (of a and b),
-    "sigmaB", "at", "value", "low", "high", "chi2", "dof"}, or None with fewer than two usable
+    "sigmaB", "at", "value", "low", "high", "chi2", "dof", "p" (chi2's
+    probability, None without dof)}, or None with fewer than two usable
     points (v > 0, sigma > 0)."""
     n, v, s = (np.asarray(x, float) for x in (n, v, sigma))
     ok = (v > 0) & (s > 0)
@@ -45,7 +69,8 @@ def power_law(n, v, sigma, at=N_PAPER_GRID):
             "sigmaB": math.sqrt(float(cov[1, 1])),
             "at": at, "value": math.exp(ln_v),
             "low": math.exp(ln_v - se), "high": math.exp(ln_v + se),
-            "chi2": chi2, "dof": dof}
+            "chi2": chi2, "dof": dof,
+            "p": chi2_sf(chi2, dof) if dof > 0 else None}
 
 
 def alpha_sigma(m):
@@ -82,6 +107,16 @@ def grid_trend(res, models, paper):
     return out
 
 
+def check(fit):
+    """The check of the law in words, for a fit with dof >= 1."""
+    p = fit["p"]
+    word = ("the power law is rejected (p < 5 %): the extrapolation"
+            " follows a law the points do not" if p < P_REJECT
+            else "consistent with a power law")
+    return (f" (chi2 {fit['chi2']:.1f} on {fit['dof']} dof, p = {p:.2g}:"
+            f" {word})")
+
+
 def lines(trend, models):
     """The trend's lines of regime.txt."""
     head = (f"Trend with the grid at the paper's phases "
@@ -100,6 +135,6 @@ def lines(trend, models):
                 f"{N_PAPER_GRID}^3 {f['value']:.3g} (68 %: {f['low']:.3g}-"
                 f"{f['high']:.3g}), paper {f['paper']:.3g}, x paper "
                 f"{f['factorToPaper']:.2f}"
-                + (f" (chi2 {f['chi2']:.1f} on {f['dof']} dof)"
-                   if f["dof"] else " (two points: no check of the law)"))
+                + (check(f) if f["dof"]
+                   else " (two points: no check of the law)"))
     return out

@@ -117,3 +117,19 @@ def test_ranges_that_do_not_overlap(nd):
     text = "\n".join(nd.lines(r, ("EAM",)))
     assert "all four within: at no n (their ranges do not overlap)" in text
     assert "the cost: n/r (fewer than two finished grid variants)" in text
+
+
+def test_a_law_the_grids_reject_is_marked(nd):
+    """Three grids off a power law beyond their sigmas (p < 5 %): the
+    reading of that law says so; an exact law is not marked."""
+    ns = [32, 48, 64]
+    off = fitted(nd, ns, [2 * n**2 * (1.2 if n == 48 else 1.0)
+                          for n in ns], 0.02, 80000.0)
+    exact = fitted(nd, ns, [2 * n**2 for n in ns], 0.02, 80000.0)
+    assert off["p"] < 0.05
+    for fit, marked in ((off, True), (exact, False)):
+        t = {"EAM": {"f_col_scaled": fit, "alpha_f": None}}
+        r = nd.needs(t, [], ("EAM",), 2.0)
+        assert r["windows"]["EAM"]["f_col_scaled"]["rejected"] is marked
+        line = [ln for ln in nd.lines(r, ("EAM",)) if "f_col" in ln][0]
+        assert ("the grids reject the law" in line) is marked

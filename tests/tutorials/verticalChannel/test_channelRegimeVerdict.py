@@ -73,7 +73,7 @@ def test_none_in_the_regime_the_closest_and_the_trend(vd):
         v = (lo * hi)**0.5
         return {"low": lo, "high": hi, "paper": 10.0, "value": v,
                 "a": math.log(v / 128), "b": 1.0,
-                "cov": [[0.01, 0.0], [0.0, 0.01]]}
+                "cov": [[0.01, 0.0], [0.0, 0.01]], "p": None}
     res = {"variants": [variant("regime32", 0.08, 30.0, 3.0),
                         variant("regime64", 0.3, 4.0, 8.0, mam=(0.35, 6))],
            "gridTrend": {
