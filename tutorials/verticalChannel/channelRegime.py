@@ -29,6 +29,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import channel
+import channelRegimeNumber as number
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import (MODELS, PAPER, analyse_variant, progress,
@@ -45,6 +46,7 @@ VARIANTS = (
     ("regime64short", "grid 64^3 at small's phases"),
     ("regime64", "grid 64^3 at the paper's phases"),
     ("regime32n3", "3e5 particles at 32^3 and the paper's phases"),
+    ("regime48n3", "3e5 particles at 48^3 and the paper's phases"),
 )
 
 
@@ -61,6 +63,7 @@ def run_post(runs=None, out=None, names=None):
             v["progress"] = progress(name, runs)
         res["variants"].append(v)
     res["gridTrend"] = trend.grid_trend(res, MODELS, PAPER)
+    res["particleNumber"] = number.particle_number(res, MODELS)
     res["verdict"] = verdict.verdict(res, MODELS)
     (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")
     (out / "regime.txt").write_text(table(res))

@@ -4,6 +4,7 @@ regime.png."""
 
 import numpy as np
 
+import channelRegimeNumber as number
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import MODELS, PAPER, QUANTILES
@@ -68,6 +69,8 @@ def table(res):
               "resumed segment counted)."]
     if "gridTrend" in res:
         lines += [""] + trend.lines(res["gridTrend"], MODELS)
+    if "particleNumber" in res:
+        lines += [""] + number.lines(res["particleNumber"], MODELS)
     if "verdict" in res:
         lines += [""] + verdict.lines(res["verdict"], MODELS)
     lines += _history_lines(res)

@@ -14,7 +14,7 @@ from aggloTools.runner import tutorial_module
 def channel_regime():
     """channelRegime as a module, after the siblings it imports."""
     for sibling in ("channel", "channelPlots", "channelRegression",
-                    "channelPost", "channelRegimeTrend",
+                    "channelPost", "channelRegimeTrend", "channelRegimeNumber",
                     "channelRegimeNeeds", "channelRegimeVerdict",
                     "channelRegimeAnalysis",
                     "channelRegimeReport", "channelRegime"):

@@ -66,7 +66,7 @@ def script(name):
     """A script of the tutorial as a module, after the siblings it
     imports."""
     for sibling in ("channel", "channelPlots", "channelRegression",
-                    "channelPost", "channelRegimeTrend",
+                    "channelPost", "channelRegimeTrend", "channelRegimeNumber",
                     "channelRegimeNeeds", "channelRegimeVerdict",
                     "channelRegimeAnalysis",
                     "channelRegimeReport"):
