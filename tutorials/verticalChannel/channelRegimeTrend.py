@@ -110,9 +110,9 @@ def grid_trend(res, models, paper):
 def check(fit):
     """The check of the law in words, for a fit with dof >= 1."""
     p = fit["p"]
-    word = ("the power law is rejected (p < 5 %): the extrapolation"
-            " follows a law the points do not" if p < P_REJECT
-            else "consistent with a power law")
+    word = (f"the power law is rejected (p < {100 * P_REJECT:g} %): the"
+            " extrapolation follows a law the points do not"
+            if p < P_REJECT else "consistent with a power law")
     return (f" (chi2 {fit['chi2']:.1f} on {fit['dof']} dof, p = {p:.2g}:"
             f" {word})")
 
