@@ -147,6 +147,60 @@ def dispersion_history(p, ddir):
     return out
 
 
+#: The least part of the window (T*) an interim rates over
+MIN_PART_TSTAR = 10.0
+
+
+def agglomeration_so_far(p, adir, last_Tstar):
+    """An unfinished agglomeration stage up to its last complete write
+    (last_Tstar: T* from the start of the unladen LES), per model whose
+    stats.dat can be read: T*agg reached, the collisions and
+    agglomerations by then and their ratio and, once the window has run
+    MIN_PART_TSTAR, Eq. 87 over its part so far (channelPost.window_rate,
+    sigma the larger of batch means and Poisson as for a finished
+    window), scaled by s^2, alpha_f and their factors to the paper. An
+    interim: the rates of a part of the window, not the window's."""
+    t0 = channel.end_time(p, "dispersion")
+    last = last_Tstar - t0 / p["tScale"]
+    w0, w1 = p["window"]
+    s2 = (channel.N_PAPER / p["nParticles"])**2
+    out = {}
+    for m in MODELS:
+        try:
+            st = read_stats(adir, m)
+        except (FileNotFoundError, ValueError):
+            continue
+        T = (st["Time"] - t0) / p["tScale"]
+        keep = T <= last + 1e-9
+        if not keep.any():
+            continue
+        T = np.concatenate(([0.0], T[keep]))
+        n = {c: np.concatenate(([0.0], st[c][keep]))
+             for c in ("nCol", "nAgg")}
+        x = {"TstarAgg": float(T[-1]), "nCol": float(n["nCol"][-1]),
+             "nAgg": float(n["nAgg"][-1]),
+             "alpha": (float(n["nAgg"][-1] / n["nCol"][-1])
+                       if n["nCol"][-1] > 0 else None)}
+        end = min(w1, T[-1])
+        if end - w0 >= MIN_PART_TSTAR:
+            col = post.window_rate(T, n["nCol"], w0, end)
+            agg = post.window_rate(T, n["nAgg"], w0, end)
+            alpha = agg[0] / col[0] if col[0] > 0 else None
+            ref = PAPER["f_agg_scaled"][m] / PAPER["f_col_scaled"][m]
+            x.update({
+                "window": [w0, end],
+                "f_col_scaled": col[0] * s2,
+                "sigma_col_scaled": max(col[1], col[2]) * s2,
+                "f_agg_scaled": agg[0] * s2,
+                "sigma_agg_scaled": max(agg[1], agg[2]) * s2,
+                "alpha_f": alpha,
+                "colFactorToPaper": col[0] * s2
+                / PAPER["f_col_scaled"][m],
+                "alphaFactorToPaper": alpha / ref if alpha else None})
+        out[m] = x
+    return out
+
+
 #: The stage folders of a variant's C1, in order
 STAGE_DIRS = (("unladen", "unladen", ("unladen",)),
               ("C1/dispersion", "dispersion", ("release", "dispersion")),
@@ -158,7 +212,8 @@ def progress(name, runs=None):
     study's window): per stage folder of C1 that exists, its last
     complete write and the stage's end (T* from the start of the
     unladen LES) and the stages done; the release and dispersion history
-    so far (dispersion_history). None where nothing has run."""
+    so far (dispersion_history) and the agglomeration stage's so far
+    (agglomeration_so_far). None where nothing has run."""
     p = channel.preset(name)
     base = runs_base(runs, name)
     stages = {}
@@ -177,9 +232,12 @@ def progress(name, runs=None):
     if not stages:
         return None
     ddir = base / "C1" / "dispersion"
+    agg = stages.get("C1/agglomeration", {}).get("lastWrite_Tstar")
     return {"stages": stages,
             "history": (dispersion_history(p, ddir)
-                        if ddir.is_dir() else [])}
+                        if ddir.is_dir() else []),
+            "agglomeration": (agglomeration_so_far(
+                p, base / "C1" / "agglomeration", agg) if agg else {})}
 
 
 def nprocs(d):

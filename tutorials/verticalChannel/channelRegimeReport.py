@@ -74,6 +74,7 @@ def table(res):
     if "verdict" in res:
         lines += [""] + verdict.lines(res["verdict"], MODELS)
     lines += _history_lines(res)
+    lines += _agglomeration_lines(res)
     return "\n".join(lines) + "\n"
 
 
@@ -123,6 +124,33 @@ def _history_lines(res, gap=40.0):
                 f"{_g(x['nearWallOverCentre']):>8s} "
                 f"{_g(x.get('fColScaled'), '.4g'):>8s} "
                 f"{_g(x.get('wallImpacts_per_particle_T')):>9s}")
+    return out
+
+
+def _agglomeration_lines(res):
+    """The unfinished variants' agglomeration stages so far."""
+    rows = [(v["name"], m, x) for v in res["variants"]
+            if not v["result"] and v.get("progress")
+            for m, x in (v["progress"].get("agglomeration") or {}).items()]
+    if not rows:
+        return []
+    out = ["", "Agglomeration stages so far (unfinished variants, to their"
+           " last complete write; Eq. 87 over the part of the window run"
+           " by then, sigma as for a window: an interim, not the "
+           "window's result):"]
+    for name, m, x in rows:
+        line = (f"{name:14s} {m:5s} T*agg {x['TstarAgg']:.0f}: N_col "
+                f"{x['nCol']:.0f}, N_agg {x['nAgg']:.0f}, alpha "
+                f"{_g(x['alpha'])}")
+        if "window" in x:
+            line += (
+                f"; window {x['window'][0]:g}-{x['window'][1]:.0f}: "
+                f"f_col x s^2 {x['f_col_scaled']:.4g} +- "
+                f"{x['sigma_col_scaled']:.3g} (x paper "
+                f"{_g(x['colFactorToPaper'])}), f_agg x s^2 "
+                f"{x['f_agg_scaled']:.4g}, alpha_f {_g(x['alpha_f'])} "
+                f"(x paper {_g(x['alphaFactorToPaper'])})")
+        out.append(line)
     return out
 
 

@@ -186,6 +186,7 @@ def test_progress_of_an_unfinished_variant(tmp_path):
     assert g["stages"]["C1/dispersion"]["done"] == ["release"]
     assert [x["nearWallOverCentre"] for x in g["history"]] == \
         pytest.approx([1, 3])
+    assert g["agglomeration"] == {}
     assert regime.progress("regime48", tmp_path) is None
 
 
@@ -217,3 +218,62 @@ def test_stage_times_count_every_resumed_segment(tmp_path):
     assert t["wall_s"] == {"unladen": 4.0, "C1/dispersion": 31.0}
     assert t["wallTotal_s"] == 35.0
     assert t["cpu_s"] == pytest.approx(3.0 + 2 * (20.0 + 7.5))
+
+
+def write_agglomeration(p, case, cloud, Tmax, col_rate, agg_rate):
+    """stats.dat of one cloud of an agglomeration stage: a row per T*agg
+    0, 1, ..., Tmax with nCol = col_rate T*agg and nAgg = agg_rate
+    T*agg (steady rates)."""
+    import channel
+    t0 = channel.end_time(p, "dispersion")
+    d = case / "postProcessing" / f"{cloud}HardSphere" / f"{t0:.12g}"
+    d.mkdir(parents=True)
+    rows = [f"{t0 + T * p['tScale']:.17g} {col_rate * T:g} {agg_rate * T:g}"
+            for T in range(Tmax + 1)]
+    (d / "stats.dat").write_text("# Time nCol nAgg\n" + "\n".join(rows)
+                                 + "\n")
+    return t0
+
+
+def test_agglomeration_stage_so_far(tmp_path):
+    """regime64 (window 100-200) cut at its write T*agg 150, stats.dat
+    already at 160: the rows past the write are left out; EAM N_col 300,
+    N_agg 15 at 150; over the window's part 100-150 f_col 2 and f_agg
+    0.1 per T* (steady: batch means 0, so the Poisson sigma sqrt(100) /
+    50), times s^2 = 3600; alpha_f 0.05. MAM has no stats.dat: left out.
+    Cut at T*agg 105 the window's part (5 T*) is too short for rates."""
+    import channel
+    channel_regime()
+    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    p = channel.preset("regime64")
+    adir = tmp_path / "agg"
+    t0 = write_agglomeration(p, adir, "EAM", 160, 2.0, 0.1)
+    T0 = t0 / p["tScale"]
+    x = regime.agglomeration_so_far(p, adir, T0 + 150)
+    assert set(x) == {"EAM"}
+    e = x["EAM"]
+    assert e["TstarAgg"] == pytest.approx(150)
+    assert (e["nCol"], e["nAgg"]) == pytest.approx((300, 15))
+    assert e["alpha"] == pytest.approx(0.05)
+    assert e["window"] == pytest.approx([100, 150])
+    assert e["f_col_scaled"] == pytest.approx(2 * 3600)
+    assert e["sigma_col_scaled"] == pytest.approx(10 / 50 * 3600)
+    assert e["f_agg_scaled"] == pytest.approx(0.1 * 3600)
+    assert e["alpha_f"] == pytest.approx(0.05)
+    assert e["colFactorToPaper"] == pytest.approx(7200 / 81400, rel=1e-3)
+    early = regime.agglomeration_so_far(p, adir, T0 + 105)["EAM"]
+    assert early["TstarAgg"] == pytest.approx(105)
+    assert "window" not in early and "f_col_scaled" not in early
+    report = tutorial_module("verticalChannel", "channelRegimeReport")
+    res = {"variants": [
+        {"name": "regime64", "result": None,
+         "progress": {"agglomeration": x}},
+        {"name": "regime48", "result": None,
+         "progress": {"agglomeration": {"EAM": early}}}]}
+    text = "\n".join(report._agglomeration_lines(res))
+    assert "regime64       EAM   T*agg 150: N_col 300, N_agg 15, alpha " \
+        "0.05; window 100-150: f_col x s^2 7200 +- 720 (x paper " \
+        "0.0885), f_agg x s^2 360, alpha_f 0.05 (x paper 6.1)" in text
+    short = [ln for ln in text.splitlines() if ln.startswith("regime48")]
+    assert len(short) == 1 and "T*agg 105: N_col 210" in short[0]
+    assert "window" not in short[0]
