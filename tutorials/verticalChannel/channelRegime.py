@@ -63,6 +63,7 @@ def run_post(runs=None, out=None, names=None):
             v["progress"] = progress(name, runs)
         res["variants"].append(v)
     res["gridTrend"] = trend.grid_trend(res, MODELS, PAPER)
+    res["gridTrendFinestPair"] = trend.finest_pair(res, MODELS, PAPER)
     res["particleNumber"] = number.particle_number(res, MODELS)
     res["verdict"] = verdict.verdict(res, MODELS)
     (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")

@@ -103,9 +103,9 @@ def _n(x):
     return "inf" if x is None or math.isinf(x) else f"{x:.3g}"
 
 
-def lines(nd, models):
+def lines(nd, models, source="the grid trend"):
     """The lines of regime.txt, under the verdict."""
-    out = ["  what the regime needs, from the grid trend (n: cells per "
+    out = [f"  what the regime needs, from {source} (n: cells per "
            "direction of a power law's extrapolation, not a run):"]
     for m in models:
         for q, name in NAMES.items():

@@ -69,6 +69,9 @@ def table(res):
               "resumed segment counted)."]
     if "gridTrend" in res:
         lines += [""] + trend.lines(res["gridTrend"], MODELS)
+    if res.get("gridTrendFinestPair"):
+        lines += [""] + trend.lines(res["gridTrendFinestPair"], MODELS,
+                                    finest=True)
     if "particleNumber" in res:
         lines += [""] + number.lines(res["particleNumber"], MODELS)
     if "verdict" in res:
@@ -266,12 +269,21 @@ def _contact_panel(ax, done, key, label):
     ax.set_title("contacts in the window: 10/25/50/75/90 %", fontsize=9)
 
 
+def _law(ax, f, n0, color, ls, lw):
+    """A fitted power law over the paper's value from n0 to 128 cells."""
+    n = np.geomspace(n0, trend.N_PAPER_GRID, 30)
+    ax.plot(n, f["value"] / f["paper"] * (n / trend.N_PAPER_GRID)**f["b"],
+            color=color, ls=ls, lw=lw)
+
+
 def _trend_panel(ax, res):
     """f_col x s^2 and alpha_f over the paper's, per model, of the grid
     variants at the paper's phases, with the fitted power laws to 128^3
-    and their 68 % bands there; shaded: within the verdict's factor."""
+    and their 68 % bands there, dotted the finest two grids' laws (with
+    three grids); shaded: within the verdict's factor."""
     done = {v["name"]: v["result"] for v in res["variants"] if v["result"]}
     fits = res.get("gridTrend") or {}
+    pair = res.get("gridTrendFinestPair") or {}
     for k, m in enumerate(MODELS):
         for q, key, mk, name in (
                 ("f_col_scaled", "colFactorToPaper", "o", r"$f_{col}s^2$"),
@@ -283,15 +295,16 @@ def _trend_panel(ax, res):
                 ax.plot(*zip(*pts), mk, color=f"C{k}", label=f"{m} {name}")
             f = fits.get(m, {}).get(q)
             if f:
-                n = np.geomspace(32, trend.N_PAPER_GRID, 30)
-                ax.plot(n, f["value"] / f["paper"]
-                        * (n / trend.N_PAPER_GRID)**f["b"], color=f"C{k}",
-                        ls="-" if q == "f_col_scaled" else "--", lw=0.8)
+                _law(ax, f, 32, f"C{k}",
+                     "-" if q == "f_col_scaled" else "--", 0.8)
                 ax.errorbar(trend.N_PAPER_GRID * (1.02 + 0.02 * k),
                             f["factorToPaper"],
                             [[f["factorToPaper"] - f["low"] / f["paper"]],
                              [f["high"] / f["paper"] - f["factorToPaper"]]],
                             fmt=mk, mfc="white", color=f"C{k}", capsize=3)
+            f = pair.get(m, {}).get(q)
+            if f:
+                _law(ax, f, 48, f"C{k}", ":", 1.2)
     ax.axhline(1, color="k", lw=0.8)
     ax.axhspan(1 / verdict.FACTOR, verdict.FACTOR, color="0.9", zorder=0,
                label=f"within a factor {verdict.FACTOR:g}")

@@ -82,13 +82,20 @@ def alpha_sigma(m):
         m["sigma_col_scaled"] / m["f_col_scaled"])
 
 
-def grid_trend(res, models, paper):
-    """Per model, the power laws of f_col x s^2 and alpha_f over the
-    finished grid variants of res (run_post's), with the factor of the
-    value at 128^3 to the paper's; {"variants": [...], model: {...}}."""
+def _finished_grids(res):
     done = {v["name"]: v["result"] for v in res["variants"]
             if v["result"]}
-    pts = [(name, n) for name, n in GRID_VARIANTS if name in done]
+    return done, [(name, n) for name, n in GRID_VARIANTS if name in done]
+
+
+def grid_trend(res, models, paper, names=None):
+    """Per model, the power laws of f_col x s^2 and alpha_f over the
+    finished grid variants of res (run_post's; of those in names only,
+    if given), with the factor of the value at 128^3 to the paper's;
+    {"variants": [...], model: {...}}."""
+    done, pts = _finished_grids(res)
+    if names is not None:
+        pts = [x for x in pts if x[0] in names]
     out = {"variants": [name for name, _ in pts]}
     for m in models:
         rows = [done[name]["models"][m] for name, _ in pts]
@@ -107,6 +114,17 @@ def grid_trend(res, models, paper):
     return out
 
 
+def finest_pair(res, models, paper):
+    """With three or more finished grid variants, grid_trend through the
+    finest two alone: the local slope, the reading a law that bends with
+    the grid favours over the fit through all of them; None with
+    fewer."""
+    _, pts = _finished_grids(res)
+    if len(pts) < 3:
+        return None
+    return grid_trend(res, models, paper, [name for name, _ in pts[-2:]])
+
+
 def check(fit):
     """The check of the law in words, for a fit with dof >= 1."""
     p = fit["p"]
@@ -117,11 +135,14 @@ def check(fit):
             f" {word})")
 
 
-def lines(trend, models):
-    """The trend's lines of regime.txt."""
+def lines(trend, models, finest=False):
+    """The trend's lines of regime.txt (finest: finest_pair's)."""
     head = (f"Trend with the grid at the paper's phases "
             f"({', '.join(trend['variants']) or 'no grid variant'}"
-            f" finished), extrapolated to {N_PAPER_GRID}^3 as v ~ n^b:")
+            f" finished), extrapolated to {N_PAPER_GRID}^3 as v ~ n^b:"
+            if not finest else
+            f"The finest two grids alone ({', '.join(trend['variants'])}"
+            f"; their local slope), extrapolated to {N_PAPER_GRID}^3:")
     out = [head]
     for m in models:
         for q in ("f_col_scaled", "alpha_f"):

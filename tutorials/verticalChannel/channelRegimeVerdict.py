@@ -16,7 +16,9 @@ variant of the smallest worst factor, and, per model and quantity, where
 the trend's 68 % band at 128^3 (channelRegimeTrend) lies against the
 factor: 'within' (all of it), 'overlaps' or 'outside', and what the
 regime needs by the trend (channelRegimeNeeds): the grid where each
-value, and all four, lie within the factor, and the cost of a C1 there."""
+value, and all four, lie within the factor, and the cost of a C1 there;
+with three grids, the same read off the finest two grids' law too
+(channelRegimeTrend.finest_pair)."""
 
 import math
 
@@ -82,7 +84,11 @@ def verdict(res, models):
                         else None),
             "trendAt128": at128,
             "needs": needs.needs(res.get("gridTrend"), judged, models,
-                                 FACTOR)}
+                                 FACTOR),
+            "needsFinestPair": (
+                needs.needs(res["gridTrendFinestPair"], judged, models,
+                            FACTOR)
+                if res.get("gridTrendFinestPair") else None)}
 
 
 def lines(vd, models):
@@ -114,4 +120,7 @@ def lines(vd, models):
                        for m in models
                        for q, c in vd["trendAt128"][m].items()))
         out += needs.lines(vd["needs"], models)
+        if vd.get("needsFinestPair"):
+            out += needs.lines(vd["needsFinestPair"], models,
+                               "the finest two grids' law")
     return out

@@ -145,3 +145,34 @@ def test_three_points_off_the_law_are_rejected(trend):
     assert "the power law is rejected" in text["off"]
     assert "consistent with a power law" in text["on"]
     assert "rejected" not in text["on"]
+
+
+def test_finest_pair_is_the_law_through_the_two_finest_grids(trend):
+    """Three finished grids on a bent law (32^3: 100, 48^3: 200, 64^3:
+    400): the finest pair's slope is ln 2 / ln(4/3) and its value at 128
+    400 x 2^b; with two grids there is no finest pair; the lines name
+    the pair and their local slope."""
+    def result(fcol):
+        m = {"f_col_scaled": fcol, "sigma_col_scaled": 0.05 * fcol,
+             "f_agg_scaled": 0.0, "sigma_agg_scaled": 0.0,
+             "alpha_f": None}
+        return {"models": {"EAM": m}}
+    paper = {"f_col_scaled": {"EAM": 1000.0},
+             "f_agg_scaled": {"EAM": 10.0}}
+    res = {"variants": [
+        {"name": "regime32", "result": result(100.0)},
+        {"name": "regime48", "result": result(200.0)},
+        {"name": "regime64", "result": result(400.0)}]}
+    f = trend.finest_pair(res, ("EAM",), paper)
+    b = math.log(2) / math.log(64 / 48)
+    assert f["variants"] == ["regime48", "regime64"]
+    assert f["EAM"]["f_col_scaled"]["b"] == pytest.approx(b, rel=1e-12)
+    assert f["EAM"]["f_col_scaled"]["value"] == pytest.approx(
+        400 * 2**b, rel=1e-12)
+    assert f["EAM"]["f_col_scaled"]["dof"] == 0
+    assert f["EAM"]["alpha_f"] is None
+    text = "\n".join(trend.lines(f, ("EAM",), finest=True))
+    assert text.startswith("The finest two grids alone (regime48, "
+                           "regime64; their local slope)")
+    assert trend.finest_pair({"variants": res["variants"][1:]},
+                             ("EAM",), paper) is None

@@ -93,8 +93,20 @@ def test_none_in_the_regime_the_closest_and_the_trend(vd):
             "s^2 outside; MAM alpha_f n/r") in text
     # What the regime needs follows (channelRegimeNeeds): EAM f_col x s^2
     # (v = n sqrt(90) / 128) lies within [5, 20] for n 67.5-270
-    assert "what the regime needs" in text
+    assert "what the regime needs, from the grid trend" in text
     assert "EAM f_col x s^2: within for n 67.5-270" in text
+    # no finest pair (fewer than three grids): no second reading
+    assert v["needsFinestPair"] is None
+    assert "finest two grids" not in text
+    # with one, its needs follow: EAM f_col x s^2 = n sqrt(90) / 64
+    # (twice the above) lies within [5, 20] for n 33.7-135
+    res["gridTrendFinestPair"] = {"EAM": {
+        "f_col_scaled": dict(fit(6.0, 15.0),
+                             a=math.log(math.sqrt(90) / 64))}}
+    text = "\n".join(vd.lines(vd.verdict(res, ("EAM", "MAM")),
+                               ("EAM", "MAM")))
+    assert "what the regime needs, from the finest two grids' law" in text
+    assert "EAM f_col x s^2: within for n 33.7-135" in text
 
 
 def test_in_the_regime_but_none_affordable(vd):
