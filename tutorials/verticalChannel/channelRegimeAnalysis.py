@@ -24,17 +24,39 @@ PAPER = {"f_col_scaled": channel.TABLE_D6["C1"]["fcol"],
          "u_tau_over_U_B": 0.053}
 #: Quantiles reported of the distributions at contact
 QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
+#: Bins of the contacts' wall distance (y/delta; the last holds the centre)
+WALL_BINS = (0.0, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0)
 
 
 def runs_base(runs, name):
     return Path(runs or HERE / "runs") / name
 
 
+def by_wall_distance(un, yw, agg, edges=WALL_BINS):
+    """The contacts per bin of wall distance yw (y/delta): how many, how
+    many agglomerated, their ratio (alpha of the bin; None where empty)
+    and the median normal approach speed (un in m/s; mm/s)."""
+    k = np.clip(np.searchsorted(edges, yw, side="right") - 1, 0,
+                len(edges) - 2)
+    out = {"edges": list(edges), "n": [], "nAgg": [], "alpha": [],
+           "unMedian_mm_s": []}
+    for b in range(len(edges) - 1):
+        s = k == b
+        n, na = int(s.sum()), int((s & agg).sum())
+        out["n"].append(n)
+        out["nAgg"].append(na)
+        out["alpha"].append(na / n if n else None)
+        out["unMedian_mm_s"].append(float(1e3 * np.median(un[s]))
+                                    if n else None)
+    return out
+
+
 def contact_distributions(adir, cloud, p, w0, w1):
     """The collisions of the window (T*agg w0-w1) from the event log: the
     normal approach speed |u_n| at contact and the wall distance of the
     contact (in delta), each as quantiles, for all counted contacts and
-    for those that agglomerated, and the first/repeat split."""
+    for those that agglomerated, the first/repeat split, and both per bin
+    of wall distance (by_wall_distance)."""
     try:
         ev = eventlog.read_events(adir, cloud)
     except FileNotFoundError:
@@ -61,6 +83,7 @@ def contact_distributions(adir, cloud, p, w0, w1):
             "un_mm_s": q(1e3 * un), "un_mm_s_agg": q(1e3 * un[agg]),
             "wallDistance_delta": q(yw),
             "wallDistance_delta_agg": q(yw[agg]),
+            "byWallDistance": by_wall_distance(un, yw, agg),
             "_un": un, "_yw": yw}
 
 

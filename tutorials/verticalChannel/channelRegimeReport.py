@@ -76,6 +76,7 @@ def table(res):
         lines += [""] + number.lines(res["particleNumber"], MODELS)
     if "verdict" in res:
         lines += [""] + verdict.lines(res["verdict"], MODELS)
+    lines += _wall_bin_lines(res)
     lines += _history_lines(res)
     lines += _agglomeration_lines(res)
     return "\n".join(lines) + "\n"
@@ -127,6 +128,28 @@ def _history_lines(res, gap=40.0):
                 f"{_g(x['nearWallOverCentre']):>8s} "
                 f"{_g(x.get('fColScaled'), '.4g'):>8s} "
                 f"{_g(x.get('wallImpacts_per_particle_T')):>9s}")
+    return out
+
+
+def _wall_bin_lines(res):
+    """The finished variants' contacts of the window per bin of wall
+    distance: contacts / agglomerating (alpha of the bin), median |u_n|."""
+    rows = [(v["name"], m, (v["result"]["models"][m]["contacts"] or {})
+             .get("byWallDistance")) for v in res["variants"]
+            if v["result"] for m in MODELS]
+    rows = [r for r in rows if r[2]]
+    if not rows:
+        return []
+    e = rows[0][2]["edges"]
+    out = ["", "Contacts of the window by wall distance y/delta (bins "
+           + ", ".join(f"{a:g}-{b:g}" for a, b in zip(e[:-1], e[1:]))
+           + "): contacts/agglomerating (their ratio) median |u_n| "
+           "mm/s"]
+    for name, m, b in rows:
+        out.append(f"{name:14s} {m:5s} " + "; ".join(
+            f"{n}/{na} ({_g(a, '.2g')}) {_g(u, '.2g')}" if n else "0"
+            for n, na, a, u in zip(b["n"], b["nAgg"], b["alpha"],
+                                   b["unMedian_mm_s"])))
     return out
 
 

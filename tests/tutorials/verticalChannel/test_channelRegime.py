@@ -277,3 +277,21 @@ def test_agglomeration_stage_so_far(tmp_path):
     short = [ln for ln in text.splitlines() if ln.startswith("regime48")]
     assert len(short) == 1 and "T*agg 105: N_col 210" in short[0]
     assert "window" not in short[0]
+
+
+def test_contacts_by_wall_distance():
+    """Six contacts at y/delta 0.01, 0.01, 0.03, 0.3, 0.7 and 1.0 (the
+    centre, in the last bin), agglomerating the 2nd, 4th and 5th: per bin
+    by hand 2/1, 1/0, 0, 0, 1/1, 2/1; the medians of |u_n| (m/s in, mm/s
+    out) 15, 30, -, -, 2, 1.5."""
+    channel_regime()
+    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    un = np.array([0.010, 0.020, 0.030, 0.002, 0.001, 0.002])
+    yw = np.array([0.01, 0.01, 0.03, 0.3, 0.7, 1.0])
+    agg = np.array([False, True, False, True, True, False])
+    b = regime.by_wall_distance(un, yw, agg)
+    assert b["n"] == [2, 1, 0, 0, 1, 2]
+    assert b["nAgg"] == [1, 0, 0, 0, 1, 1]
+    assert b["alpha"] == [0.5, 0.0, None, None, 1.0, 0.5]
+    assert b["unMedian_mm_s"] == pytest.approx([15, 30, None, None, 2,
+                                                1.5])

@@ -371,6 +371,8 @@ def test_regime_study_post(smoke_runs, tmp_path):
         assert ct["nRepeat"] == x["nColRepeat_end"] == st["nColRepeat"][-1]
         assert ct["nAgg"] == st["nAggFirst"][-1] + st["nAggRepeat"][-1]
         assert ct["nAgg"] >= 25     # the slow seeded pairs
+        wb = ct["byWallDistance"]
+        assert (sum(wb["n"]), sum(wb["nAgg"])) == (ct["n"], ct["nAgg"])
         # the slow seeded pairs approach at 0.3 mm/s, the fast at 20
         assert 0.25 < np.median(ct["un_mm_s_agg"]) < 0.35
     c = r["concentration"]
