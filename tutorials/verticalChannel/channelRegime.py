@@ -34,7 +34,8 @@ import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import (MODELS, PAPER, analyse_variant, progress,
                                    runs_base)
-from channelRegimeReport import plots, table
+from channelRegimePlots import plots
+from channelRegimeReport import table
 
 HERE = channel.HERE
 

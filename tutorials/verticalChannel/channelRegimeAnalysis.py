@@ -32,6 +32,14 @@ def runs_base(runs, name):
     return Path(runs or HERE / "runs") / name
 
 
+def variant_history(v):
+    """A variant's release and dispersion history (finished or not) from
+    run_post's record of it."""
+    if v["result"]:
+        return v["result"].get("concentrationHistory") or []
+    return (v.get("progress") or {}).get("history") or []
+
+
 def by_wall_distance(un, yw, agg, edges=WALL_BINS):
     """The contacts per bin of wall distance yw (y/delta): how many, how
     many agglomerated, their ratio (alpha of the bin; None where empty)

@@ -17,7 +17,8 @@ def channel_regime():
                     "channelPost", "channelRegimeTrend", "channelRegimeNumber",
                     "channelRegimeNeeds", "channelRegimeVerdict",
                     "channelRegimeAnalysis",
-                    "channelRegimeReport", "channelRegime"):
+                    "channelRegimeReport", "channelRegimePlots",
+                    "channelRegime"):
         module = tutorial_module("verticalChannel", sibling)
     return module
 

@@ -69,7 +69,7 @@ def script(name):
                     "channelPost", "channelRegimeTrend", "channelRegimeNumber",
                     "channelRegimeNeeds", "channelRegimeVerdict",
                     "channelRegimeAnalysis",
-                    "channelRegimeReport"):
+                    "channelRegimeReport", "channelRegimePlots"):
         tutorial_module("verticalChannel", sibling)
     return tutorial_module("verticalChannel", name)
 
