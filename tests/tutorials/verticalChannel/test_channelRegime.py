@@ -1,7 +1,7 @@
 """channelRegime.py's runner (the regime study's variants, one Allrun
 each), channelRegimeAnalysis's concentration and rates between writes and
 the progress of an unfinished variant; the study's post-processing is
-tested on the smoke runs in test_verticalChannel.py."""
+tested on the smoke runs in test_channelSmokeOutputs.py."""
 
 import threading
 
@@ -9,18 +9,12 @@ import numpy as np
 import pytest
 
 from aggloTools.runner import tutorial_module
+from channelTestRuns import script
 
 
 def channel_regime():
     """channelRegime as a module, after the siblings it imports."""
-    for sibling in ("channel", "channelPlots", "channelRegression",
-                    "channelPost", "channelRegimeTrend", "channelRegimeNumber",
-                    "channelRegimeNeeds", "channelRegimeVerdict",
-                    "channelRegimeAnalysis",
-                    "channelRegimeReport", "channelRegimePlots",
-                    "channelRegime"):
-        module = tutorial_module("verticalChannel", sibling)
-    return module
+    return script("channelRegime")
 
 
 def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):

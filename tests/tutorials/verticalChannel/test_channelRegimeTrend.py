@@ -130,7 +130,6 @@ def test_three_points_off_the_law_are_rejected(trend):
     on = [100.0 * (x / 32) ** 2 for x in n]
     off = list(on)
     off[1] *= math.exp(5 * 0.02 * math.sqrt(1.5))
-    paper = {"f_col_scaled": {"EAM": 1e5}, "f_agg_scaled": {"EAM": 100.0}}
     text = {}
     for name, v in (("on", on), ("off", off)):
         f = trend.power_law(n, v, [0.02 * x for x in v])

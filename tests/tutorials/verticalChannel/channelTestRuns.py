@@ -1,0 +1,70 @@
+"""The verticalChannel tests' smoke runs and helpers: the tutorial's own
+./Allrun, preset smoke (doc/cases.md A.11), configurations C1 and C2,
+in a copy (tests/runs/test_verticalChannel), serially and on 2 MPI
+ranks; the tutorial's scripts as modules; the runs' stage folders. The
+session fixture smoke_runs (conftest.py) runs them once for every test
+module of this folder."""
+
+import os
+import shutil
+import subprocess
+
+import numpy as np
+
+from aggloTools.runner import project_dir, tutorial_module
+
+ROOT = project_dir()
+RUNS = ROOT / "tests" / "runs"
+TUTORIAL = ROOT / "tutorials" / "verticalChannel"
+STEPS_AGG = 30          # smoke: 0.6 T* at dt* = 0.02
+N_RELEASED, N_PAIRS = 2000, 50
+N_TOTAL = N_RELEASED + 2 * N_PAIRS
+
+
+def run_smoke(tmp, np_):
+    case = tmp / f"verticalChannel_np{np_}"
+    if case.exists():
+        shutil.rmtree(case)
+    case.mkdir(parents=True)
+    scripts = sorted(f.name for f in TUTORIAL.glob("channel*.py"))
+    for name in ["0.orig", "constant", "system", "presets", "Allrun",
+                 "Allclean"] + scripts:
+        src = TUTORIAL / name
+        (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)
+    res = subprocess.run(
+        ["./Allrun", "-preset", "smoke", "-configs", "C1 C2", "-np",
+         str(np_), "-every", "600"], cwd=case, stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT, text=True, timeout=900,
+        env=dict(os.environ, PWD=str(case)))
+    (case / "log.Allrun").write_text(res.stdout)
+    if res.returncode != 0:
+        raise AssertionError(res.stdout[-4000:])
+    return case
+
+
+def script(name):
+    """A script of the tutorial as a module, after the siblings it
+    imports (all of them, so that any script can be asked for)."""
+    for sibling in ("channel", "channelPlots", "channelRegression",
+                    "channelPost", "channelRegimeTrend", "channelRegimeNumber",
+                    "channelRegimeNeeds", "channelRegimeVerdict",
+                    "channelRegimeAnalysis",
+                    "channelRegimeReport", "channelRegimePlots",
+                    "channelRegime"):
+        tutorial_module("verticalChannel", sibling)
+    return tutorial_module("verticalChannel", name)
+
+
+def agg_runs(case):
+    base = case / "runs" / "smoke"
+    return {("C1", "EAM"): base / "C1/agglomeration",
+            ("C1", "MAM"): base / "C1/agglomeration",
+            ("C2", "EAM"): base / "C2/agglomeration-EAM",
+            ("C2", "MAM"): base / "C2/agglomeration-MAM"}
+
+
+def last_profiles(adir, cloud):
+    files = sorted((adir / "postProcessing" / f"{cloud}HardSphere").glob(
+        "*/profiles.dat"), key=lambda f: float(f.parent.name))
+    text = files[-1].read_text()
+    return text, np.loadtxt(files[-1])

@@ -1,0 +1,110 @@
+"""tutorials/verticalChannel, what the smoke runs' post-processing makes of
+them (the runs: channelTestRuns, once per session): the particle picture
+without legacy positions, the regime study's post-processing (contacts
+from the event log against the counters, the concentration of a uniform
+release, variants not run) and the report's head, sim/paper factors and
+comparison between the serial and 2-rank runs."""
+
+import json
+import math
+import shutil
+
+import numpy as np
+import pytest
+
+from aggloTools import cloud, times
+from aggloTools.stats import read_stats
+from channelTestRuns import N_RELEASED, agg_runs, script
+
+
+def test_picture_without_legacy_positions(smoke_runs, tmp_path, capsys):
+    """A run that writes no legacy positions (the paper preset) still gets
+    its particle picture, drawn from the barycentric coordinates and the
+    mesh at the same places; a run with neither file is named."""
+    post = script("channelPost")
+    src = agg_runs(smoke_runs[1])[("C1", "EAM")]
+    adir = tmp_path / "agglomeration"
+    shutil.copytree(src, adir, ignore=shutil.ignore_patterns(
+        "processor*", "VTK", "postProcessing"))
+    t = times.time_dirs(adir)[-1]
+    pos = t / "lagrangian" / "EAM" / "positions"
+    x_legacy = cloud.read_positions(pos)
+    pos.unlink()
+    x = cloud.cloud_positions(adir, t.name, "EAM")
+    assert np.abs(x - x_legacy).max() < 1e-12
+    p = post.channel.preset("smoke")
+    png = post.picture(tmp_path, p, {("C1", "EAM"): (adir, "EAM")})
+    assert png is not None and png.stat().st_size > 10000
+    (t / "lagrangian" / "EAM" / "coordinates").unlink()
+    assert post.picture(tmp_path, p, {("C1", "EAM"): (adir, "EAM")}) is None
+    assert "neither positions nor coordinates" in capsys.readouterr().out
+
+
+def test_regime_study_post(smoke_runs, tmp_path):
+    """The regime study's post-processing (channelRegime.py) on the smoke
+    runs: the contacts it reads from the event log add up to the
+    statistics' counters (first, repeat and agglomerating contacts of the
+    window), the particle concentration at the start of agglomeration is
+    that of the uniform release (near-wall over centre within 3 sigma of
+    1, Poisson), and a variant not run is reported as such, not guessed."""
+    regime = script("channelRegime")
+    runs = smoke_runs[2] / "runs"
+    res = regime.run_post(runs, tmp_path, ["smoke", "regime32"])
+    smoke, missing = res["variants"]
+    assert missing["result"] is None and missing["progress"] is None
+    assert f"regime32       not run in {runs / 'regime32'}" in \
+        (tmp_path / "regime.txt").read_text()
+    # no grid variant finished: the trend to 128^3 is n/r, not guessed
+    assert res["gridTrend"]["variants"] == []
+    assert res["gridTrend"]["EAM"]["f_col_scaled"] is None
+    assert "EAM f_col_scaled: n/r" in (tmp_path / "regime.txt").read_text()
+    r = smoke["result"]
+    adir = agg_runs(smoke_runs[2])[("C1", "EAM")]
+    for m in ("EAM", "MAM"):
+        x = r["models"][m]
+        st = read_stats(adir, m)
+        ct = x["contacts"]
+        assert ct["nFirst"] == x["nColFirst_end"] == st["nColFirst"][-1]
+        assert ct["nRepeat"] == x["nColRepeat_end"] == st["nColRepeat"][-1]
+        assert ct["nAgg"] == st["nAggFirst"][-1] + st["nAggRepeat"][-1]
+        assert ct["nAgg"] >= 25     # the slow seeded pairs
+        wb = ct["byWallDistance"]
+        assert (sum(wb["n"]), sum(wb["nAgg"])) == (ct["n"], ct["nAgg"])
+        # the slow seeded pairs approach at 0.3 mm/s, the fast at 20
+        assert 0.25 < np.median(ct["un_mm_s_agg"]) < 0.35
+    c = r["concentration"]
+    nb = len(c["alpha"])
+    per_slab = N_RELEASED / nb
+    sigma = math.sqrt(1 / (2 * per_slab) + 1 / (nb / 4 * per_slab))
+    assert abs(c["nearWallOverCentre"] - 1) < 3 * sigma, c
+    assert (tmp_path / "regime.png").stat().st_size > 10000
+    assert json.loads((tmp_path / "regime.json").read_text())[
+        "variants"][0]["result"]["models"]["EAM"]["f_col_scaled"] > 0
+
+
+def test_report_head_factors_and_comparison(smoke_runs):
+    """The report says first what its preset resolves and where the
+    regime study is; every row with a published value carries sim/paper;
+    the comparison with another report weighs each value against both
+    sigmas: the serial and 2-rank C1 runs (no random numbers) agree
+    exactly (z = 0), and nothing differs beyond 3 sigma."""
+    post = script("channelPost")
+    rep = {n: smoke_runs[n] / "runs" / "smoke" / "report" for n in (1, 2)}
+    lines = (rep[2] / "regression.txt").read_text().splitlines()
+    assert lines[0].startswith("What preset smoke resolves: nothing of")
+    assert "results/regime" in lines[1] and "channelRegime.py" in lines[1]
+    rows = json.loads((rep[2] / "summary.json").read_text())["regression"]
+    with_paper = [r for r in rows if r["sim"] is not None and r["paper"]]
+    assert len(with_paper) >= 12
+    for r in with_paper:
+        assert r["factor"] == pytest.approx(r["sim"] / r["paper"],
+                                            rel=1e-12)
+    assert any(r["quantity"] == "C1 EAM alpha_f = f_agg/f_col"
+               and r["paper"] == pytest.approx(6.67e2 / 8.14e4)
+               for r in rows)
+    text = post.compare(rows, rep[1] / "summary.json")
+    c1 = [line for line in text.splitlines()
+          if line.startswith("C1 ") and " f_col x s^2" in line]
+    assert len(c1) == 2 and all(" 0 " in line and "agree" in line
+                                for line in c1), c1
+    assert " 0 differ" in text.splitlines()[-1], text.splitlines()[-1]
