@@ -1,7 +1,7 @@
 """The scripted boxes of the cloud tests (tests/unit/cloud): 12 um
 quartz primaries in a 100 um box, a pair approaching at a given angle,
-a hard-sphere gas and an agglomerating gas, and the particle state of a
-written cloud. The box cases themselves are aggloTools.boxcase."""
+a hard-sphere gas, an agglomerating gas and one that logs its
+collisions, and the particle state of a written cloud. The box cases themselves are aggloTools.boxcase."""
 
 import math
 
@@ -99,3 +99,26 @@ def assert_fatal_naming(res, word):
     assert "FOAM FATAL" in res.stdout, res.stdout[-2000:]
     assert word in res.stdout.split("FOAM FATAL", 1)[1], \
         res.stdout[-2000:]
+
+
+def logged_gas(case, model="EAM", log=True, decompose=(1, 1, 1),
+               end=4e-3, write=10):
+    """300 quartz primaries at about 2 mm/s in a 200 um box, periodic in
+    x and z, walls in y, the collision-event log on (log): collisions of
+    every category and agglomerates within 40 steps."""
+    N, LB = 300, 2e-4
+    rng = np.random.default_rng(11)
+    xs = placement.place(N, 1.2 * D, (0, 0.6 * D, 0),
+                         (LB, LB - 0.6 * D, LB), (LB, None, LB), rng)
+    U = rng.normal(0, 1.5e-3, (N, 3))
+    parts = [dict(x=tuple(x), U=tuple(u), id=i)
+             for i, (x, u) in enumerate(zip(xs, U))]
+    box_case(case, L=(LB,) * 3, n=(6, 6, 6),
+             kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
+             end_time=end, write_interval=write, agglomeration=model,
+             decompose=decompose)
+    if log:
+        f = case / "constant" / "kinematicCloudProperties"
+        old = "agglomerationModel " + model + ";"
+        f.write_text(f.read_text().replace(old, old + " eventLog true;", 1))
+    return case
