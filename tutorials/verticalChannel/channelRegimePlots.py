@@ -60,9 +60,7 @@ def plots(res, out):
     ax[2].set_title("at the start of agglomeration", fontsize=9)
     if not done:
         for a_ in ax[:3]:
-            a_.text(0.5, 0.5, "no variant has finished yet",
-                    transform=a_.transAxes, ha="center", va="center",
-                    color="0.4")
+            _empty(a_, "no variant has finished yet")
     for k, (key, label) in enumerate((
             ("nearWallOverCentre", "near-wall / centre volume fraction [-]"),
             ("fColScaled", r"collisions per T* $\times s^2$ [1/T*]"),
@@ -129,6 +127,12 @@ def _contact_panel(ax, done, key, label):
     ax.set_title("contacts in the window: 10/25/50/75/90 %", fontsize=9)
 
 
+def _empty(ax, text):
+    """A panel with nothing to draw says why."""
+    ax.text(0.5, 0.5, text, transform=ax.transAxes, ha="center",
+            va="center", color="0.4")
+
+
 def _law(ax, f, n0, color, ls, lw):
     """A fitted power law over the paper's value from n0 to 128 cells."""
     n = np.geomspace(n0, trend.N_PAPER_GRID, 30)
@@ -178,9 +182,7 @@ def _trend_panel(ax, res):
     ax.set_ylabel("sim / paper, C1 [-]")
     ax.set_title("grid trend (paper's phases), extrapolated", fontsize=9)
     if not done:
-        ax.text(0.5, 0.5, "no variant has finished yet",
-                transform=ax.transAxes, ha="center", va="center",
-                color="0.4")
+        _empty(ax, "no variant has finished yet")
 
 
 def _wall_bin_panels(ax_alpha, ax_rate, done):
@@ -254,6 +256,4 @@ def _number_panel(ax, res):
     ax.set_ylabel("3e5 particles over 1e5 [-]")
     ax.set_title("particle number (1: the s^2 scaling holds)", fontsize=9)
     if not rows:
-        ax.text(0.5, 0.5, "no particle-number pair has finished yet",
-                transform=ax.transAxes, ha="center", va="center",
-                color="0.4")
+        _empty(ax, "no particle-number pair has finished yet")

@@ -1,7 +1,8 @@
 """The scripted boxes of the cloud tests (tests/unit/cloud): 12 um
 quartz primaries in a 100 um box, a pair approaching at a given angle,
-a hard-sphere gas, an agglomerating gas and one that logs its
-collisions, and the particle state of a written cloud. The box cases themselves are aggloTools.boxcase."""
+a hard-sphere gas, an agglomerating gas and the 300-primaries gas of
+the event-log and restart-record tests, and the particle state of a
+written cloud. The box cases themselves are aggloTools.boxcase."""
 
 import math
 
@@ -101,13 +102,14 @@ def assert_fatal_naming(res, word):
         res.stdout[-2000:]
 
 
-def logged_gas(case, model="EAM", log=True, decompose=(1, 1, 1),
-               end=4e-3, write=10):
+def primaries_gas(case, model="EAM", log=True, decompose=(1, 1, 1),
+               end=4e-3, write=10, seed=11):
     """300 quartz primaries at about 2 mm/s in a 200 um box, periodic in
-    x and z, walls in y, the collision-event log on (log): collisions of
-    every category and agglomerates within 40 steps."""
+    x and z, walls in y, agglomeration model, the collision-event log on
+    unless log is False: collisions of every category and agglomerates
+    within 40 steps."""
     N, LB = 300, 2e-4
-    rng = np.random.default_rng(11)
+    rng = np.random.default_rng(seed)
     xs = placement.place(N, 1.2 * D, (0, 0.6 * D, 0),
                          (LB, LB - 0.6 * D, LB), (LB, None, LB), rng)
     U = rng.normal(0, 1.5e-3, (N, 3))

@@ -17,7 +17,7 @@ from aggloTools.boxcase import run_case
 from aggloTools.runner import foam_bin, run
 from aggloTools.stats import stats_rows
 from aggloTools.times import time_dirs
-from cloudBoxCases import D, logged_gas as gas
+from cloudBoxCases import D, primaries_gas as gas
 
 
 def check_log_against_stats(case):

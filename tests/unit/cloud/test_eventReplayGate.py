@@ -3,7 +3,7 @@ exits 1 where the run's kernel does not reproduce the log; bad
 arguments, failing writes and targets that are not plain files leave
 earlier outputs as they were; a corrupt, cut-back or cut-off log is
 refused; a variant of the other model drops the run's coefficients;
-the per-event output. The logs come from cloudBoxCases.logged_gas."""
+the per-event output. The logs come from cloudBoxCases.primaries_gas."""
 
 import re
 import shutil
@@ -14,7 +14,7 @@ import pytest
 from aggloTools import eventlog
 from aggloTools.boxcase import run_case
 from aggloTools.runner import foam_bin, run
-from cloudBoxCases import logged_gas as gas
+from cloudBoxCases import primaries_gas as gas
 
 def _replay_cmd(c, *args):
     return run([foam_bin("hardSphereReplay"), "-case", str(c), *args], c,

@@ -11,30 +11,18 @@ checks that it continues exactly)."""
 import re
 import shutil
 
-import numpy as np
 import pytest
 
-from aggloTools import placement, times
-from aggloTools.boxcase import box_case, run_case
+from aggloTools import times
+from aggloTools.boxcase import run_case
 from aggloTools.runner import foam_bin, run
-
-D, LB, N = 12e-6, 2e-4, 300
-
+from cloudBoxCases import primaries_gas
 
 def gas(case, decompose=(1, 1, 1)):
     """300 quartz primaries, periodic in x and z, walls in y, EAM: 40
-    steps with agglomerates, written at steps 20 and 40."""
-    rng = np.random.default_rng(13)
-    xs = placement.place(N, 1.2 * D, (0, 0.6 * D, 0),
-                         (LB, LB - 0.6 * D, LB), (LB, None, LB), rng)
-    U = rng.normal(0, 1.5e-3, (N, 3))
-    parts = [dict(x=tuple(x), U=tuple(u), id=i)
-             for i, (x, u) in enumerate(zip(xs, U))]
-    box_case(case, L=(LB,) * 3, n=(6, 6, 6),
-             kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
-             end_time=4e-3, write_interval=20, agglomeration="EAM",
-             decompose=decompose)
-    return case
+    steps with agglomerates, written at steps 20 and 40 (no event log)."""
+    return primaries_gas(case, log=False, decompose=decompose, write=20,
+                      seed=13)
 
 
 def restart(case, parallel=0):
