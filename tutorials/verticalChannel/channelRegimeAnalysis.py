@@ -28,6 +28,18 @@ QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
 WALL_BINS = (0.0, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0)
 
 
+def paper_alpha(m):
+    """The paper's alpha_f = f_agg / f_col of model m (C1)."""
+    return PAPER["f_agg_scaled"][m] / PAPER["f_col_scaled"][m]
+
+
+def factors_to_paper(m, f_col_scaled, alpha_f):
+    """sim / paper of f_col x s^2 and of alpha_f (None without one)."""
+    return {"colFactorToPaper": f_col_scaled / PAPER["f_col_scaled"][m],
+            "alphaFactorToPaper": (alpha_f / paper_alpha(m)
+                                   if alpha_f else None)}
+
+
 def runs_base(runs, name):
     return Path(runs or HERE / "runs") / name
 
@@ -217,7 +229,6 @@ def agglomeration_so_far(p, adir, last_Tstar):
             col = post.window_rate(T, n["nCol"], w0, end)
             agg = post.window_rate(T, n["nAgg"], w0, end)
             alpha = agg[0] / col[0] if col[0] > 0 else None
-            ref = PAPER["f_agg_scaled"][m] / PAPER["f_col_scaled"][m]
             x.update({
                 "window": [w0, end],
                 "f_col_scaled": col[0] * s2,
@@ -225,9 +236,7 @@ def agglomeration_so_far(p, adir, last_Tstar):
                 "f_agg_scaled": agg[0] * s2,
                 "sigma_agg_scaled": max(agg[1], agg[2]) * s2,
                 "alpha_f": alpha,
-                "colFactorToPaper": col[0] * s2
-                / PAPER["f_col_scaled"][m],
-                "alphaFactorToPaper": alpha / ref if alpha else None})
+                **factors_to_paper(m, col[0] * s2, alpha)})
         out[m] = x
     return out
 
@@ -344,12 +353,7 @@ def analyse_variant(name, runs=None):
             "nAggFirst_end": float(st["nAggFirst"][k]),
             "nAggRepeat_end": float(st["nAggRepeat"][k]),
             "wallImpacts_per_particle_T": r["f_wall"] / p["nParticles"],
-            "colFactorToPaper": r["f_col_scaled"]
-            / PAPER["f_col_scaled"][m],
-            "alphaFactorToPaper": (
-                r["alpha_f"] / (PAPER["f_agg_scaled"][m]
-                                / PAPER["f_col_scaled"][m])
-                if r["alpha_f"] else None),
+            **factors_to_paper(m, r["f_col_scaled"], r["alpha_f"]),
             "contacts": ({k2: v for k2, v in d.items()
                           if not k2.startswith("_")} if d else None)})
     ut_un, _ = post.u_tau(p, base / "unladen")

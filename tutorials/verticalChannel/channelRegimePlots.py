@@ -9,7 +9,7 @@ import numpy as np
 
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
-from channelRegimeAnalysis import (MODELS, PAPER, QUANTILES,
+from channelRegimeAnalysis import (MODELS, PAPER, QUANTILES, paper_alpha,
                                    variant_history)
 
 
@@ -40,8 +40,8 @@ def plots(res, out):
         ax[1].plot(xs + 0.1 * k, a, "o", label=m)
         ax[0].axhline(PAPER["f_col_scaled"][m], ls="--", color=f"C{k}",
                       lw=0.8, label=f"paper {m}")
-        ax[1].axhline(PAPER["f_agg_scaled"][m] / PAPER["f_col_scaled"][m],
-                      ls="--", color=f"C{k}", lw=0.8, label=f"paper {m}")
+        ax[1].axhline(paper_alpha(m), ls="--", color=f"C{k}", lw=0.8,
+                      label=f"paper {m}")
     for a_ in ax[:2]:
         a_.set_xlim(-0.5, max(len(done), 1) - 0.5)
         a_.set_xticks(xs)
@@ -212,8 +212,8 @@ def _wall_bin_panels(ax_alpha, ax_rate, done):
             ax_rate.plot(yc, n / (w1 - w0) * r["scale_s2"], mk + "-",
                          color=f"C{i}", lw=0.8, label=lab)
     for k, m in enumerate(MODELS):
-        ax_alpha.axhline(PAPER["f_agg_scaled"][m] / PAPER["f_col_scaled"][m],
-                         ls="--", color="0.4" if k else "0.2", lw=0.8,
+        ax_alpha.axhline(paper_alpha(m), ls="--",
+                         color="0.4" if k else "0.2", lw=0.8,
                          label=f"paper alpha_f {m}")
     ticks = (0.02, 0.05, 0.1, 0.2, 0.5, 1.0)
     for a_ in (ax_alpha, ax_rate):

@@ -8,13 +8,7 @@ import threading
 import numpy as np
 import pytest
 
-from aggloTools.runner import tutorial_module
 from channelTestRuns import script
-
-
-def channel_regime():
-    """channelRegime as a module, after the siblings it imports."""
-    return script("channelRegime")
 
 
 def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
@@ -23,7 +17,7 @@ def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
     breaks), each with the ranks asked for and its output in its own
     log; the exit status is the first failed variant's, in the order
     given, and 0 when all finish."""
-    regime = channel_regime()
+    regime = script("channelRegime")
     monkeypatch.setattr(regime, "HERE", tmp_path)
     meet = threading.Barrier(2, timeout=10)
     calls = []
@@ -97,8 +91,7 @@ def test_concentration_between_writes(tmp_path):
     per T*, times s^2 = (6e6/N)^2; 1 and 10 wall impacts are 2 and 10 per
     T*, over N particles."""
     import channel
-    channel_regime()
-    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    regime = script("channelRegimeAnalysis")
     p = channel.preset("smoke")
     t0 = write_dispersion(p, tmp_path)
     h = regime.concentration_history(p, tmp_path)
@@ -125,8 +118,7 @@ def test_dispersion_history_without_readable_stats(tmp_path):
     """No stats.dat, or one whose last row is being written (a live run):
     the concentration history alone, no rates."""
     import channel
-    channel_regime()
-    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    regime = script("channelRegimeAnalysis")
     p = channel.preset("smoke")
     write_dispersion(p, tmp_path, with_stats=False)
     h = regime.dispersion_history(p, tmp_path)
@@ -154,8 +146,7 @@ def test_progress_of_an_unfinished_variant(tmp_path):
     of the dispersion folder comes with it. A variant with no folder
     has no progress."""
     import channel
-    channel_regime()
-    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    regime = script("channelRegimeAnalysis")
     p = channel.preset("regime64")
     base = tmp_path / "regime64"
     un = base / "unladen"
@@ -190,8 +181,7 @@ def test_stage_times_count_every_resumed_segment(tmp_path):
     again) on 2 ranks and a serial stage: each folder's wall-clock is the
     sum of its segments' last ClockTime, the CPU the sum of the last
     ExecutionTimes times the ranks (hand sums)."""
-    channel_regime()
-    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    regime = script("channelRegimeAnalysis")
 
     def log(d, segments, ranks=1):
         d.mkdir(parents=True)
@@ -238,8 +228,7 @@ def test_agglomeration_stage_so_far(tmp_path):
     50), times s^2 = 3600; alpha_f 0.05. MAM has no stats.dat: left out.
     Cut at T*agg 105 the window's part (5 T*) is too short for rates."""
     import channel
-    channel_regime()
-    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    regime = script("channelRegimeAnalysis")
     p = channel.preset("regime64")
     adir = tmp_path / "agg"
     t0 = write_agglomeration(p, adir, "EAM", 160, 2.0, 0.1)
@@ -259,7 +248,7 @@ def test_agglomeration_stage_so_far(tmp_path):
     early = regime.agglomeration_so_far(p, adir, T0 + 105)["EAM"]
     assert early["TstarAgg"] == pytest.approx(105)
     assert "window" not in early and "f_col_scaled" not in early
-    report = tutorial_module("verticalChannel", "channelRegimeReport")
+    report = script("channelRegimeReport")
     res = {"variants": [
         {"name": "regime64", "result": None,
          "progress": {"agglomeration": x}},
@@ -279,8 +268,7 @@ def test_contacts_by_wall_distance():
     centre, in the last bin), agglomerating the 2nd, 4th and 5th: per bin
     by hand 2/1, 1/0, 0, 0, 1/1, 2/1; the medians of |u_n| (m/s in, mm/s
     out) 15, 30, -, -, 2, 1.5."""
-    channel_regime()
-    regime = tutorial_module("verticalChannel", "channelRegimeAnalysis")
+    regime = script("channelRegimeAnalysis")
     un = np.array([0.010, 0.020, 0.030, 0.002, 0.001, 0.002])
     yw = np.array([0.01, 0.01, 0.03, 0.3, 0.7, 1.0])
     agg = np.array([False, True, False, True, True, False])

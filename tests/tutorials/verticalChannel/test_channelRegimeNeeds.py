@@ -9,19 +9,18 @@ import math
 import numpy as np
 import pytest
 
-from aggloTools.runner import tutorial_module
+from channelTestRuns import script
 
 
 @pytest.fixture(scope="module")
 def nd():
-    tutorial_module("verticalChannel", "channelRegimeTrend")
-    return tutorial_module("verticalChannel", "channelRegimeNeeds")
+    return script("channelRegimeNeeds")
 
 
 def fitted(nd, n, v, rel, paper):
     """The trend module's fit of v(n) with relative sigma rel, and the
     paper's value."""
-    trend = tutorial_module("verticalChannel", "channelRegimeTrend")
+    trend = script("channelRegimeTrend")
     f = trend.power_law(n, v, rel * np.asarray(v, float))
     f["paper"] = paper
     return f

@@ -6,14 +6,12 @@ import math
 
 import pytest
 
-from aggloTools.runner import tutorial_module
+from channelTestRuns import script
 
 
 @pytest.fixture(scope="module")
 def num():
-    tutorial_module("verticalChannel", "channel")
-    tutorial_module("verticalChannel", "channelRegimeTrend")
-    return tutorial_module("verticalChannel", "channelRegimeNumber")
+    return script("channelRegimeNumber")
 
 
 def model(fcol, scol, fagg, sagg):

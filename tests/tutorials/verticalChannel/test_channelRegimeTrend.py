@@ -7,13 +7,12 @@ import math
 import numpy as np
 import pytest
 
-from aggloTools.runner import tutorial_module
+from channelTestRuns import script
 
 
 @pytest.fixture(scope="module")
 def trend():
-    tutorial_module("verticalChannel", "channel")
-    return tutorial_module("verticalChannel", "channelRegimeTrend")
+    return script("channelRegimeTrend")
 
 
 def test_exact_power_law_three_points(trend):

@@ -8,14 +8,12 @@ import math
 
 import pytest
 
-from aggloTools.runner import tutorial_module
+from channelTestRuns import script
 
 
 @pytest.fixture(scope="module")
 def vd():
-    for sibling in ("channelRegimeTrend", "channelRegimeNeeds"):
-        tutorial_module("verticalChannel", sibling)
-    return tutorial_module("verticalChannel", "channelRegimeVerdict")
+    return script("channelRegimeVerdict")
 
 
 def variant(name, col, alpha, cpu_h, mam=None):
