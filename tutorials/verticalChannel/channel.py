@@ -155,6 +155,9 @@ def settings(pname, cname, stage, models=(), nprocs=1):
     Lx, Ly, Lz = p["L"]
     nx, ny, nz = p["n"]
     write_steps = max(1, int(round(p["writeStar"] / p["dtStar"])))
+    t_scale = f"{p['tScale']:.6g}"
+    stage_end = f"{steps(p, stage) * p['dtStar']:.6g}"
+    positions = 1 if p['writePositions'] == 'on' else 0
     return f"""\
 /*--------------------------------*- C++ -*----------------------------------*\\
 | agglomerationHardSphere: verticalChannel                                    |
@@ -172,7 +175,7 @@ FoamFile
 // The parameters of one stage of one run, in one place: written by
 //     channel.py settings {pname} {cname} {stage} {' '.join(models)}
 // (./Allrun does it) from the presets and configurations files and
-// #included by the other dictionaries. Times in s; delta/U_B = {p['tScale']:.6g} s.
+// #included by the other dictionaries. Times in s; delta/U_B = {t_scale} s.
 
 preset          {pname};
 configuration   {cname};
@@ -188,13 +191,13 @@ nz              {nz};
 yGrading        {p['yGrading']};
 yGradingInv     {1 / p['yGrading']:.10g};
 
-// Time: dt* = {p['dtStar']}; this stage ends at T* = {steps(p, stage) * p['dtStar']:.6g}
+// Time: dt* = {p['dtStar']}; this stage ends at T* = {stage_end}
 deltaT          {p['deltaT']:.10g};
 endTime         {end_time(p, stage):.10g};
 writeSteps      {write_steps};
 writeFormat     {p['writeFormat']};
 purgeWrite      {p['purgeWrite']};      // keep the last N writes (0: all)
-writePositions  {1 if p['writePositions'] == 'on' else 0};  // legacy positions too
+writePositions  {positions};  // legacy positions too
 ddtScheme       {p['ddtScheme']};
 
 // Flow (Re_b = 11900)
