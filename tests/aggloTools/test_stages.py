@@ -11,9 +11,14 @@ import sys
 import textwrap
 import time
 
+import shutil
+
 import pytest
 
 from aggloTools import stages
+from aggloTools.cloud import read_cloud
+from aggloTools.runner import foam_bin, run
+from aggloTools.times import time_dirs
 from aggloTools.runner import CommandError
 
 
@@ -106,3 +111,28 @@ def test_sigint_stops_the_tree_and_exits_130(tmp_path):
     time.sleep(0.5)
     with pytest.raises(ProcessLookupError):
         os.kill(bash, 0)
+
+
+def test_decompose_takes_the_latest_folder_by_name(raised_digits, case_dir):
+    """A case branched at a folder OpenFOAM v1912 does not find by itself
+    (16.333317, timePrecision 2) decomposes onto 2 ranks with its fields
+    and every particle; plain decomposePar writes none of them and
+    succeeds."""
+    case = case_dir / "branch"
+    shutil.copytree(raised_digits, case)
+    for t in time_dirs(case):
+        if t.name != "16.333317":
+            shutil.rmtree(t)
+    for entry, value in (("numberOfSubdomains", "2"), ("coeffs/n", "(2 1 1)")):
+        run([foam_bin("foamDictionary"), "-entry", entry, "-set", value,
+             "system/decomposeParDict"], case, "log.foamDictionary")
+    run([foam_bin("decomposePar"), "-force"], case, "log.plain")
+    assert not (case / "processor0" / "16.333317").exists()
+    stages.decompose(case)
+    ids = []
+    for proc in ("processor0", "processor1"):
+        assert (case / proc / "16.333317" / "U").is_file(), proc
+        if (case / proc / "16.333317" / "lagrangian").is_dir():
+            ids += list(read_cloud(case / proc, "16.333317",
+                                   names=["origId"])["origId"])
+    assert sorted(ids) == [0, 1, 2]

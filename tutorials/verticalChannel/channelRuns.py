@@ -40,7 +40,6 @@ Run times on the 2-core development machine: README.md.
 
 import contextlib
 import io
-import re
 import subprocess
 import sys
 import time
@@ -98,15 +97,7 @@ class Channel:
             return
         self.settings(d, config, stage, models)
         if np > 1 and not (d / "processor0").is_dir():
-            stages.run_logged(["decomposePar", "-force"], d,
-                              "log.decomposePar")
-            # decomposePar writes barycentric coordinates but copies the
-            # uniform cloudProperties that announce a legacy positions file
-            for f in d.glob("processor*/*/uniform/lagrangian/*/"
-                            "cloudProperties"):
-                text = f.read_text()
-                f.write_text(re.sub(r"geometry *positions;",
-                                    "geometry coordinates;", text))
+            stages.decompose(d)
         # A write cut off by a kill is set aside (OpenFOAM would stop on it)
         said = io.StringIO()
         with contextlib.redirect_stdout(said):
@@ -159,8 +150,7 @@ class Channel:
             # On several ranks the particles go straight into the processor
             # folders: the fluid is decomposed first, if not copied so
             if np > 1 and not (d / "processor0").is_dir():
-                stages.run_logged(["decomposePar", "-force"], d,
-                                  "log.decomposePar")
+                stages.decompose(d)
             self.python(d, "release", "channelParticles.py", "release",
                         ".")
             (d / "released").touch()

@@ -81,21 +81,6 @@ def test_v1912_search_restated():
     assert v1912_found_at("0.5303281405", 10) == 10
 
 
-@pytest.fixture(scope="module")
-def raised_digits(tmp_path_factory, foam_env):
-    """An uninterrupted run whose time names gain digits: dt = 1/3 s,
-    timePrecision 2, to t = 17 s, a write per step."""
-    parts = [dict(x=(2e-4 + 1e-4 * i, 5e-4, 5e-4), U=(0, 0, 0), id=i)
-             for i in range(3)]
-    whole = tmp_path_factory.mktemp("raisedDigits") / "whole"
-    boxcase.box_case(whole, particles=parts, dt=1 / 3, end_time=17.0,
-                     write_interval=1, agglomeration="EAM")
-    run([foam_bin("foamDictionary"), "-entry", "timePrecision", "-set", "2",
-         "system/controlDict"], whole, "log.foamDictionary")
-    boxcase.run_case(whole)
-    return whole
-
-
 @pytest.mark.parametrize("found", [17, None], ids=["at17", "notFound"])
 def test_restart_where_the_run_raised_the_digits(raised_digits, case_dir,
                                                  found):

@@ -13,6 +13,7 @@ stopping every process started (exit status 130, nothing after it runs).
 import argparse
 import contextlib
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -159,6 +160,23 @@ def run_logged(cmd, cwd, log, append=False):
     if rc != 0:
         raise CommandError(f"{Path(str(cmd[0])).name} failed (rc {rc}), "
                            f"see {cwd / log}")
+
+
+def decompose(case, log="log.decomposePar"):
+    """decomposePar of the case's latest time, the one its run starts
+    from, named (-latestTime): plain decomposePar takes the time OpenFOAM
+    v1912's Time starts at, which is not the folder where the run raised
+    the digits of its names past timePrecision and v1912 does not find it
+    (as for 16.333317 at 2 digits; aggloPimpleFoam's restoreStartTime.H),
+    and then writes none of its fields and succeeds. decomposePar writes
+    barycentric coordinates but copies the uniform cloudProperties that
+    announce a legacy positions file: they announce coordinates."""
+    run_logged(["decomposePar", "-force", "-latestTime"], case, log)
+    for f in Path(case).glob("processor*/*/uniform/lagrangian/*/"
+                             "cloudProperties"):
+        text = f.read_text()
+        f.write_text(re.sub(r"geometry *positions;",
+                            "geometry coordinates;", text))
 
 
 def run_solver(case, cmd, label, progress, every, append=False,
