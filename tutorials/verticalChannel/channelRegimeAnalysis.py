@@ -13,7 +13,7 @@ import numpy as np
 import channel
 import channelPost as post
 from aggloTools import eventlog, times
-from aggloTools.stats import last_output, read_stats, read_table
+from aggloTools.stats import read_stats, read_table
 
 HERE = channel.HERE
 
@@ -116,45 +116,73 @@ def near_wall_over_centre(alpha):
     return float(wall / mid) if mid > 0 else None
 
 
-def concentration(p, ddir):
+#: The concentration the agglomeration phase starts from: the profile
+#: over the dispersion's last START_SPAN T* (from the release where the
+#: release and dispersion are shorter)
+START_SPAN = 100.0
+
+
+def _running_profiles(p, ddir):
+    """Each write's profiles.dat of the release and dispersion stages:
+    T* (absolute), the steps sampled since the release and the profile
+    averaged over them (y, alpha)."""
+    base = Path(ddir) / "postProcessing" / "particlesHardSphere"
+    out = []
+    for f in sorted(base.glob("*/profiles.dat"),
+                    key=lambda f: float(f.parent.name)):
+        m = re.search(r"(\d+) steps sampled", f.read_text().split("\n")[0])
+        t = read_table(f)
+        out.append({"T": float(f.parent.name) / p["tScale"],
+                    "n": int(m.group(1)) if m else 0,
+                    "y": np.asarray(t["x"], float),
+                    "alpha": np.asarray(t["alpha"], float), "file": f})
+    return out
+
+
+def _between(w0, w1):
+    """The profile of the steps between two writes: each write averages
+    over all steps since the release, so (N1 a1 - N0 a0) / (N1 - N0)."""
+    n0, a0 = (w0["n"], w0["alpha"]) if w0 else (0, 0.0)
+    return (w1["n"] * w1["alpha"] - n0 * a0) / (w1["n"] - n0)
+
+
+def concentration(p, ddir, span=START_SPAN):
     """The particle volume fraction across the channel at the start of
-    the agglomeration phase (the dispersion's last write): the near-wall
-    peak (near_wall_over_centre) and the profile itself."""
-    f = last_output(ddir, "particles", "profiles.dat")
-    if f is None:
+    the agglomeration phase: the profile over the dispersion's last span
+    T* (between its last write and the latest write at least span T*
+    before it, or from the release), the near-wall peak of it
+    (near_wall_over_centre) and T0, T1 (T*, absolute) of that span."""
+    w = _running_profiles(p, ddir)
+    if not w or w[-1]["n"] <= 0:
         return None
-    t = read_table(f)
-    a = np.asarray(t["alpha"], float)
-    y = np.asarray(t["x"], float)
+    last = w[-1]
+    early = [x for x in w[:-1] if x["T"] <= last["T"] - span + 1e-9
+             and 0 < x["n"] < last["n"]]
+    w0 = early[-1] if early else None
+    a = _between(w0, last)
     return {"nearWallOverCentre": near_wall_over_centre(a),
-            "y": y.tolist(), "alpha": a.tolist(), "file": str(f)}
+            "y": last["y"].tolist(), "alpha": a.tolist(),
+            "T0": (w0["T"] if w0 else
+                   channel.end_time(p, "unladen") / p["tScale"]),
+            "T1": last["T"], "file": str(last["file"])}
 
 
 def concentration_history(p, ddir, span=0.0):
     """How the near-wall peak grows over the release and dispersion
-    stages: each write's profiles.dat averages the profile over all steps
-    since the release ("N steps sampled"), so the profile of the steps
-    between two writes is (N1 a1 - N0 a0) / (N1 - N0); per interval
-    between writes (the first from the release, T* absolute; writes less
-    than `span` T* after the interval's start are passed over, except the
-    last), near_wall_over_centre of that profile."""
-    base = Path(ddir) / "postProcessing" / "particlesHardSphere"
-    files = sorted(base.glob("*/profiles.dat"),
-                   key=lambda f: float(f.parent.name))
+    stages: per interval between writes (the first from the release, T*
+    absolute; writes less than `span` T* after the interval's start are
+    passed over, except the last), near_wall_over_centre of the profile
+    of its steps (_between)."""
+    w = _running_profiles(p, ddir)
     out = []
-    n0, a0, T0 = 0, 0.0, channel.end_time(p, "unladen") / p["tScale"]
-    for k, f in enumerate(files):
-        T1 = float(f.parent.name) / p["tScale"]
-        if T1 - T0 < span and k < len(files) - 1:
+    w0, T0 = None, channel.end_time(p, "unladen") / p["tScale"]
+    for k, w1 in enumerate(w):
+        if w1["T"] - T0 < span and k < len(w) - 1:
             continue
-        m = re.search(r"(\d+) steps sampled", f.read_text().split("\n")[0])
-        n1 = int(m.group(1)) if m else 0
-        a1 = np.asarray(read_table(f)["alpha"], float)
-        if n1 > n0:
-            out.append({"T0": T0, "T1": T1, "nearWallOverCentre":
-                        near_wall_over_centre((n1 * a1 - n0 * a0)
-                                              / (n1 - n0))})
-            n0, a0, T0 = n1, a1, T1
+        if w1["n"] > (w0["n"] if w0 else 0):
+            out.append({"T0": T0, "T1": w1["T"], "nearWallOverCentre":
+                        near_wall_over_centre(_between(w0, w1))})
+            w0, T0 = w1, w1["T"]
     return out
 
 
@@ -252,8 +280,10 @@ def progress(name, runs=None):
     study's window): per stage folder of C1 that exists, its last
     complete write and the stage's end (T* from the start of the
     unladen LES) and the stages done; the release and dispersion history
-    so far (dispersion_history) and the agglomeration stage's so far
-    (agglomeration_so_far). None where nothing has run."""
+    so far (dispersion_history), the concentration at the start of
+    agglomeration once the dispersion is done (concentration; None
+    before) and the agglomeration stage's so far (agglomeration_so_far).
+    None where nothing has run."""
     p = channel.preset(name)
     base = runs_base(runs, name)
     stages = {}
@@ -273,9 +303,12 @@ def progress(name, runs=None):
         return None
     ddir = base / "C1" / "dispersion"
     agg = stages.get("C1/agglomeration", {}).get("lastWrite_Tstar")
+    dispersed = "dispersion" in stages.get("C1/dispersion",
+                                           {}).get("done", [])
     return {"stages": stages,
             "history": (dispersion_history(p, ddir)
                         if ddir.is_dir() else []),
+            "concentration": concentration(p, ddir) if dispersed else None,
             "agglomeration": (agglomeration_so_far(
                 p, base / "C1" / "agglomeration", agg) if agg else {})}
 

@@ -9,8 +9,8 @@ import numpy as np
 
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
-from channelRegimeAnalysis import (MODELS, PAPER, QUANTILES, paper_alpha,
-                                   variant_history)
+from channelRegimeAnalysis import (MODELS, PAPER, QUANTILES, START_SPAN,
+                                   paper_alpha, variant_history)
 
 
 def plots(res, out):
@@ -55,12 +55,22 @@ def plots(res, out):
         c = v["result"]["concentration"]
         if c:
             ax[2].plot(np.asarray(c["y"]) / 0.02, c["alpha"], label=v["name"])
+    # the dispersion done, the agglomeration still running: dashed
+    for v in res["variants"]:
+        c = None if v["result"] else (v.get("progress") or {}).get(
+            "concentration")
+        if c:
+            ax[2].plot(np.asarray(c["y"]) / 0.02, c["alpha"], "--",
+                       label=f"{v['name']} (running)")
     ax[2].set_xlabel(r"wall-normal position $y/\delta$ [-]")
     ax[2].set_ylabel("particle volume fraction [-]")
-    ax[2].set_title("at the start of agglomeration", fontsize=9)
+    ax[2].set_title("at the start of agglomeration (the dispersion's "
+                    f"last {START_SPAN:g} T*)", fontsize=9)
     if not done:
-        for a_ in ax[:3]:
+        for a_ in ax[:2]:
             _empty(a_, "no variant has finished yet")
+    if not ax[2].lines:
+        _empty(ax[2], "no variant has finished its dispersion yet")
     for k, (key, label) in enumerate((
             ("nearWallOverCentre", "near-wall / centre volume fraction [-]"),
             ("fColScaled", r"collisions per T* $\times s^2$ [1/T*]"),

@@ -6,7 +6,7 @@ model, the trend, the particle number, the verdict and the interims
 import channelRegimeNumber as number
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
-from channelRegimeAnalysis import MODELS, PAPER, variant_history
+from channelRegimeAnalysis import MODELS, PAPER, START_SPAN, variant_history
 
 
 def _g(v, fmt=".3g"):
@@ -63,7 +63,9 @@ def table(res):
               " the window's contacts of the event log; wall/N/T*: wall "
               "impacts per particle and T*; c_w/c_0: particle volume "
               "fraction next to the walls over the centre's at the start "
-              "of the agglomeration phase; wall h, cpu h: the C1 stages' "
+              "of the agglomeration phase (over the dispersion's last "
+              f"{START_SPAN:g} T*, from the release where shorter); wall "
+              "h, cpu h: the C1 stages' "
               "wall-clock and CPU hours (all ranks; the solver's, every "
               "resumed segment counted)."]
     if "gridTrend" in res:
@@ -146,16 +148,23 @@ def _wall_bin_lines(res):
 
 
 def _agglomeration_lines(res):
-    """The unfinished variants' agglomeration stages so far."""
-    rows = [(v["name"], m, x) for v in res["variants"]
-            if not v["result"] and v.get("progress")
+    """The unfinished variants' agglomeration stages so far, after the
+    concentration at their start where the dispersion is done."""
+    going = [v for v in res["variants"]
+             if not v["result"] and v.get("progress")]
+    starts = [(v["name"], v["progress"]["concentration"]) for v in going
+              if v["progress"].get("concentration")]
+    rows = [(v["name"], m, x) for v in going
             for m, x in (v["progress"].get("agglomeration") or {}).items()]
-    if not rows:
+    if not rows and not starts:
         return []
     out = ["", "Agglomeration stages so far (unfinished variants, to their"
            " last complete write; Eq. 87 over the part of the window run"
            " by then, sigma as for a window: an interim, not the "
            "window's result):"]
+    for name, c in starts:
+        out.append(f"{name:14s} c_w/c_0 at the start of agglomeration "
+                   f"(the dispersion done): {_g(c['nearWallOverCentre'])}")
     for name, m, x in rows:
         line = (f"{name:14s} {m:5s} T*agg {x['TstarAgg']:.0f}: N_col "
                 f"{x['nCol']:.0f}, N_agg {x['nAgg']:.0f}, alpha "

@@ -86,7 +86,10 @@ def test_concentration_between_writes(tmp_path):
     (write_dispersion): near-wall over centre 1 and then 3 (hand values),
     over T* from the release to each write; with a span of 1 T* the
     first write is passed over and the one interval from the release
-    holds all 30 steps: (10 + 20 x 3) / 30 = 7/3. dispersion_history
+    holds all 30 steps: (10 + 20 x 3) / 30 = 7/3. The concentration the
+    agglomeration starts from, over the last 100 T*, is that 7/3 too
+    (from the release); over the last 1 T* the second interval's 3.
+    dispersion_history
     adds the rates: 4 and 20 collisions over 0.5 and 1 T* are 8 and 20
     per T*, times s^2 = (6e6/N)^2; 1 and 10 wall impacts are 2 and 10 per
     T*, over N particles."""
@@ -99,9 +102,15 @@ def test_concentration_between_writes(tmp_path):
     assert [x["T0"] - T0 for x in h] == pytest.approx([0.0, 0.5])
     assert [x["T1"] - T0 for x in h] == pytest.approx([0.5, 1.5])
     assert [x["nearWallOverCentre"] for x in h] == pytest.approx([1, 3])
-    # the last write's running average alone: (10 + 20 x 3) / 30 = 7/3
-    assert regime.concentration(p, tmp_path)["nearWallOverCentre"] == \
-        pytest.approx(7 / 3)
+    # over the last 100 T*, here from the release: the last write's
+    # running average alone, (10 + 20 x 3) / 30 = 7/3
+    c = regime.concentration(p, tmp_path)
+    assert c["nearWallOverCentre"] == pytest.approx(7 / 3)
+    assert (c["T0"] - T0, c["T1"] - T0) == pytest.approx((0.0, 1.5))
+    # over the last 1 T*: from the write at 0.5, the second interval's 3
+    c = regime.concentration(p, tmp_path, span=1.0)
+    assert c["nearWallOverCentre"] == pytest.approx(3)
+    assert (c["T0"] - T0, c["T1"] - T0) == pytest.approx((0.5, 1.5))
     coarse = regime.concentration_history(p, tmp_path, span=1.0)
     assert [v - T0 for x in coarse for v in (x["T0"], x["T1"])] == \
         pytest.approx([0.0, 1.5])
@@ -143,8 +152,9 @@ def test_progress_of_an_unfinished_variant(tmp_path):
     release, a third write cut off: the last complete writes in T* are
     the unladen end and release + 1.5 (the cut-off write is not
     counted), the stages' ends and the markers as written; the history
-    of the dispersion folder comes with it. A variant with no folder
-    has no progress."""
+    of the dispersion folder comes with it, and once the dispersion is
+    done the concentration at the start of agglomeration. A variant with
+    no folder has no progress."""
     import channel
     regime = script("channelRegimeAnalysis")
     p = channel.preset("regime64")
@@ -173,7 +183,19 @@ def test_progress_of_an_unfinished_variant(tmp_path):
     assert [x["nearWallOverCentre"] for x in g["history"]] == \
         pytest.approx([1, 3])
     assert g["agglomeration"] == {}
+    # the start of agglomeration is not known before the dispersion ends
+    assert g["concentration"] is None
     assert regime.progress("regime48", tmp_path) is None
+    # the dispersion done: its last write's running average, (10 + 20 x
+    # 3) / 30 = 7/3, as for a finished variant, and the report says it
+    (disp / "done.dispersion").write_text("1\n")
+    g = regime.progress("regime64", tmp_path)
+    assert g["concentration"]["nearWallOverCentre"] == pytest.approx(7 / 3)
+    report = script("channelRegimeReport")
+    text = "\n".join(report._agglomeration_lines(
+        {"variants": [{"name": "regime64", "result": None, "progress": g}]}))
+    assert "regime64       c_w/c_0 at the start of agglomeration (the " \
+        "dispersion done): 2.33" in text
 
 
 def test_stage_times_count_every_resumed_segment(tmp_path):
