@@ -139,11 +139,18 @@ def _running_profiles(p, ddir):
     return out
 
 
+def _release(p):
+    """The release as a write of no steps (T* absolute), where the first
+    interval of _between starts."""
+    return {"T": channel.end_time(p, "unladen") / p["tScale"], "n": 0,
+            "alpha": 0.0}
+
+
 def _between(w0, w1):
     """The profile of the steps between two writes: each write averages
     over all steps since the release, so (N1 a1 - N0 a0) / (N1 - N0)."""
-    n0, a0 = (w0["n"], w0["alpha"]) if w0 else (0, 0.0)
-    return (w1["n"] * w1["alpha"] - n0 * a0) / (w1["n"] - n0)
+    return (w1["n"] * w1["alpha"] - w0["n"] * w0["alpha"]) \
+        / (w1["n"] - w0["n"])
 
 
 def concentration(p, ddir, span=START_SPAN):
@@ -158,13 +165,11 @@ def concentration(p, ddir, span=START_SPAN):
     last = w[-1]
     early = [x for x in w[:-1] if x["T"] <= last["T"] - span + 1e-9
              and 0 < x["n"] < last["n"]]
-    w0 = early[-1] if early else None
+    w0 = early[-1] if early else _release(p)
     a = _between(w0, last)
     return {"nearWallOverCentre": near_wall_over_centre(a),
             "y": last["y"].tolist(), "alpha": a.tolist(),
-            "T0": (w0["T"] if w0 else
-                   channel.end_time(p, "unladen") / p["tScale"]),
-            "T1": last["T"], "file": str(last["file"])}
+            "T0": w0["T"], "T1": last["T"], "file": str(last["file"])}
 
 
 def concentration_history(p, ddir, span=0.0):
@@ -175,14 +180,14 @@ def concentration_history(p, ddir, span=0.0):
     of its steps (_between)."""
     w = _running_profiles(p, ddir)
     out = []
-    w0, T0 = None, channel.end_time(p, "unladen") / p["tScale"]
+    w0 = _release(p)
     for k, w1 in enumerate(w):
-        if w1["T"] - T0 < span and k < len(w) - 1:
+        if w1["T"] - w0["T"] < span and k < len(w) - 1:
             continue
-        if w1["n"] > (w0["n"] if w0 else 0):
-            out.append({"T0": T0, "T1": w1["T"], "nearWallOverCentre":
+        if w1["n"] > w0["n"]:
+            out.append({"T0": w0["T"], "T1": w1["T"], "nearWallOverCentre":
                         near_wall_over_centre(_between(w0, w1))})
-            w0, T0 = w1, w1["T"]
+            w0 = w1
     return out
 
 
