@@ -29,7 +29,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import channel
-import channelRegimeNumber as number
+import channelRegimePairs as pairs
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import (MODELS, PAPER, analyse_variant, progress,
@@ -65,7 +65,8 @@ def run_post(runs=None, out=None, names=None):
         res["variants"].append(v)
     res["gridTrend"] = trend.grid_trend(res, MODELS, PAPER)
     res["gridTrendFinestPair"] = trend.finest_pair(res, MODELS, PAPER)
-    res["particleNumber"] = number.particle_number(res, MODELS)
+    for check in pairs.CHECKS:
+        res[check] = pairs.compare(res, MODELS, check)
     res["verdict"] = verdict.verdict(res, MODELS)
     (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")
     (out / "regime.txt").write_text(table(res))

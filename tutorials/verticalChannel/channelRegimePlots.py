@@ -2,11 +2,12 @@
 variants' results (channelRegimeAnalysis): the rates and alpha_f of the
 finished variants, the concentration at the start of agglomeration, the
 release and dispersion between writes, the contacts' distributions and
-where along the wall distance they agglomerate, the particle number's
-ratios and the grid trend against the paper."""
+where along the wall distance they agglomerate, the ratios of the
+variants one shortcut apart and the grid trend against the paper."""
 
 import numpy as np
 
+import channelRegimePairs as pairs
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import (MODELS, PAPER, QUANTILES, START_SPAN,
@@ -21,7 +22,7 @@ def plots(res, out):
     impacts between writes; the distributions of |u_n| and of the wall
     distance at contact, the grid trend against the paper; the contacts'
     rate and their ratio of agglomerations per bin of wall distance, and
-    the particle number's ratios."""
+    the ratios of the variants one shortcut apart."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -101,7 +102,7 @@ def plots(res, out):
         _contact_panel(a_, done, key, label)
     _trend_panel(ax[8], res)
     _wall_bin_panels(ax[9], ax[10], done)
-    _number_panel(ax[11], res)
+    _pairs_panel(ax[11], res)
     for a_ in ax[2:]:
         if a_.get_legend_handles_labels()[0] and a_.get_legend() is None:
             a_.legend(fontsize=7)
@@ -242,20 +243,22 @@ def _wall_bin_panels(ax_alpha, ax_rate, done):
     ax_rate.set_title("the window's contacts by wall distance", fontsize=9)
 
 
-def _number_panel(ax, res):
-    """The particle number's ratios (3e5 over 1e5, channelRegimeNumber)
-    with their sigma; 1: the s^2 scaling."""
-    rows = [p for p in res.get("particleNumber") or []
+def _pairs_panel(ax, res):
+    """The ratios of the variants one shortcut apart (channelRegimePairs:
+    particle number, phase lengths) with their sigma; 1: no effect."""
+    rows = [p for check in pairs.CHECKS for p in res.get(check) or []
             if "missing" not in p]
     names = ("f_col_scaled", "f_agg_scaled", "alpha_f")
     labels = (r"$f_{col}s^2$", r"$f_{agg}s^2$", r"$\alpha_f$")
+    step = 0.8 / max(2 * len(rows), 1)
     for i, p in enumerate(rows):
         for k, m in enumerate(MODELS):
+            dx = (2 * i + k - (2 * len(rows) - 1) / 2) * step
             for j, q in enumerate(names):
                 r = p[m][q]
                 if r:
-                    ax.errorbar(j + 0.15 * (2 * i + k) - 0.2, r["ratio"],
-                                r["sigma"], fmt="o" if k == 0 else "s",
+                    ax.errorbar(j + dx, r["ratio"], r["sigma"],
+                                fmt="o" if k == 0 else "s",
                                 color=f"C{i}", capsize=3,
                                 label=(f"{p['variant']} / {p['base']} {m}"
                                        if j == 0 else None))
@@ -263,7 +266,9 @@ def _number_panel(ax, res):
     ax.set_xticks(range(len(names)))
     ax.set_xticklabels(labels)
     ax.set_xlim(-0.5, len(names) - 0.5)
-    ax.set_ylabel("3e5 particles over 1e5 [-]")
-    ax.set_title("particle number (1: the s^2 scaling holds)", fontsize=9)
+    ax.set_ylabel("variant over its base [-]")
+    ax.set_title("one shortcut apart (1: no effect): particle number "
+                 "3e5 / 1e5,\nphase lengths the paper's / small's",
+                 fontsize=9)
     if not rows:
-        _empty(ax, "no particle-number pair has finished yet")
+        _empty(ax, "no pair one shortcut apart has finished yet")

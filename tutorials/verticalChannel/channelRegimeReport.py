@@ -1,9 +1,10 @@
 """verticalChannel regime study: the report of the variants' results
 (channelRegimeAnalysis) in words, regime.txt: one row per variant and
-model, the trend, the particle number, the verdict and the interims
+model, the trend, the variants one shortcut apart (particle number,
+phase lengths), the verdict and the interims
 (the figure: channelRegimePlots)."""
 
-import channelRegimeNumber as number
+import channelRegimePairs as pairs
 import channelRegimeTrend as trend
 import channelRegimeVerdict as verdict
 from channelRegimeAnalysis import MODELS, PAPER, START_SPAN, variant_history
@@ -73,8 +74,9 @@ def table(res):
     if res.get("gridTrendFinestPair"):
         lines += [""] + trend.lines(res["gridTrendFinestPair"], MODELS,
                                     finest=True)
-    if "particleNumber" in res:
-        lines += [""] + number.lines(res["particleNumber"], MODELS)
+    for check in pairs.CHECKS:
+        if check in res:
+            lines += [""] + pairs.lines(res[check], MODELS, check)
     if "verdict" in res:
         lines += [""] + verdict.lines(res["verdict"], MODELS)
     lines += _wall_bin_lines(res)

@@ -1,0 +1,111 @@
+"""The regime study's variants one shortcut apart (channelRegimePairs.py):
+the ratio of a variant's scaled frequencies to its base's, its standard
+error by propagation, the verdict on the shortcut, and the pairs of both
+checks (particle number, phase lengths)."""
+
+import math
+
+import pytest
+
+from channelTestRuns import script
+
+
+@pytest.fixture(scope="module")
+def pairs():
+    return script("channelRegimePairs")
+
+
+def model(fcol, scol, fagg, sagg):
+    return {"f_col_scaled": fcol, "sigma_col_scaled": scol,
+            "f_agg_scaled": fagg, "sigma_agg_scaled": sagg,
+            "alpha_f": fagg / fcol if fcol else None}
+
+
+def result(m, near_wall=None):
+    return {"models": {"EAM": m},
+            "concentration": ({"nearWallOverCentre": near_wall}
+                              if near_wall else None)}
+
+
+def study(**results):
+    return {"variants": [{"name": n, "result": r}
+                         for n, r in results.items()]}
+
+
+def test_ratio_and_its_sigma(pairs):
+    """f_col x s^2 8,000 +- 400 (5 %) over 10,000 +- 1,200 (12 %): ratio
+    0.8 +- 0.8 x 13 %, z = -0.2 / 0.104 = -1.92: consistent; alpha_f's
+    relative sigma from f_agg's and f_col's of each run."""
+    base = result(model(10000.0, 1200.0, 500.0, 100.0))
+    var = result(model(8000.0, 400.0, 200.0, 20.0))
+    rows = pairs.compare(study(regime32=base, regime32n3=var), ("EAM",),
+                         "particleNumber")
+    r = rows[0]["EAM"]
+    col = r["f_col_scaled"]
+    assert col["ratio"] == pytest.approx(0.8, rel=1e-12)
+    assert col["sigma"] == pytest.approx(0.8 * 0.13, rel=1e-12)
+    assert col["z"] == pytest.approx(-0.2 / 0.104, rel=1e-12)
+    assert col["consistent"]
+    agg = r["f_agg_scaled"]
+    assert agg["ratio"] == pytest.approx(0.4, rel=1e-12)
+    assert agg["z"] == pytest.approx(-0.6 / (0.4 * math.hypot(0.1, 0.2)),
+                                     rel=1e-12)
+    assert not agg["consistent"]
+    alpha = r["alpha_f"]
+    rel_v, rel_b = math.hypot(0.1, 0.05), math.hypot(0.2, 0.12)
+    assert alpha["ratio"] == pytest.approx(0.5, rel=1e-12)
+    assert alpha["sigma"] == pytest.approx(0.5 * math.hypot(rel_v, rel_b),
+                                           rel=1e-12)
+    text = "\n".join(pairs.lines(rows, ("EAM",), "particleNumber"))
+    assert "regime32n3 over regime32 EAM: f_col x s^2 0.80 +- 0.10 " \
+        "(z -1.9: consistent)" in text
+    assert "f_agg x s^2 0.40 +- 0.09 (z -6.7: depends on N)" in text
+
+
+def test_pairs_not_yet_comparable_and_no_events(pairs):
+    """A pair with a run missing is n/r naming it; a quantity with no
+    agglomeration in the window is n/r, not a ratio of 0."""
+    base = result(model(10000.0, 1000.0, 500.0, 100.0))
+    var = result(model(9000.0, 500.0, 0.0, 0.0))
+    rows = pairs.compare(
+        study(regime32=base, regime32n3=var, regime48=None), ("EAM",),
+        "particleNumber")
+    assert rows[0]["EAM"]["f_agg_scaled"] is None
+    assert rows[0]["EAM"]["alpha_f"] is None
+    assert rows[1] == {"variant": "regime48n3", "base": "regime48",
+                       "missing": ["regime48n3", "regime48"]}
+    text = "\n".join(pairs.lines(rows, ("EAM",), "particleNumber"))
+    assert "regime48n3 over regime48: n/r (regime48n3, regime48 not " \
+        "finished)" in text
+    assert "f_agg x s^2 n/r (no events or no sigma)" in text
+
+
+def test_phase_lengths(pairs):
+    """The paper's phases over small's at one grid: regime64 over
+    regime64short and regime32 over small. f_col x s^2 40,000 +- 2,000
+    over 10,000 +- 1,000: ratio 4 +- 4 x hypot(0.05, 0.1) = 0.447, z =
+    3 / 0.447 = 6.7: depends on the phases; the near-wall over centre
+    concentrations of both runs (3.85 and 1.4) stand beside; a pair with
+    its base missing (small) is n/r."""
+    base = result(model(10000.0, 1000.0, 400.0, 80.0), near_wall=1.4)
+    var = result(model(40000.0, 2000.0, 400.0, 40.0), near_wall=3.85)
+    rows = pairs.compare(study(regime64short=base, regime64=var,
+                               regime32=var), ("EAM",), "phaseLength")
+    assert rows[0] == {"variant": "regime32", "base": "small",
+                       "missing": ["small"]}
+    col = rows[1]["EAM"]["f_col_scaled"]
+    assert col["ratio"] == pytest.approx(4.0, rel=1e-12)
+    assert col["sigma"] == pytest.approx(4 * math.hypot(0.05, 0.1),
+                                         rel=1e-12)
+    assert not col["consistent"]
+    agg = rows[1]["EAM"]["f_agg_scaled"]
+    assert agg["ratio"] == pytest.approx(1.0, rel=1e-12)
+    assert agg["z"] == pytest.approx(0.0, abs=1e-12)
+    assert rows[1]["nearWallOverCentre"] == [3.85, 1.4]
+    text = "\n".join(pairs.lines(rows, ("EAM",), "phaseLength"))
+    assert text.startswith("Phase lengths (the paper's 240/100/520/200 T*")
+    assert "regime32 over small: n/r (small not finished)" in text
+    assert "regime64 over regime64short EAM: f_col x s^2 4.00 +- 0.45 " \
+        "(z +6.7: depends on the phases)" in text
+    assert "regime64 over regime64short: c_w/c_0 at the start of " \
+        "agglomeration 3.85 / 1.4" in text

@@ -1,0 +1,129 @@
+"""verticalChannel regime study: the variants one shortcut apart,
+compared. Two checks (CHECKS), each over pairs (variant, base) that
+differ in that shortcut alone:
+
+* the particle number: each 3 x 10^5 variant (s = 20) over its 10^5 base
+  (s = 60), the same grid and phases. The frequencies are compared
+  scaled to the paper's number (f x s^2, Eq. 87 over the window): where
+  the collisions of a particle depend only on the others' concentration,
+  f_col grows as N^2 and f_col x s^2 is the same at both numbers (ratio
+  1), and so is alpha_f;
+* the phase lengths: each variant at the paper's phases (240/100/520/200
+  T*, window 100-200) over its base at `small`'s (60/10/30/60, window
+  30-60), the same grid and particles. Ratio 1: `small`'s shorter
+  release, dispersion and window give the paper's phases' result.
+
+Per model and quantity (f_col x s^2, f_agg x s^2, alpha_f): the ratio
+variant / base, its standard error from both runs' sigmas (relative
+errors in quadrature; alpha_f's from f_agg's and f_col's), and z =
+(ratio - 1) / sigma. |z| <= Z_CONSISTENT: consistent (the shortcut does
+not change it); beyond it the quantity depends on the shortcut. Per
+pair, the near-wall over centre concentration at the start of
+agglomeration of both runs (no sigma: the two values)."""
+
+import math
+
+import channelRegimeTrend as trend
+
+#: The checks: their pairs (variant, base), the heading of their lines
+#: in regime.txt and the words for a ratio beyond Z_CONSISTENT
+CHECKS = {
+    "particleNumber": {
+        "pairs": (("regime32n3", "regime32"), ("regime48n3", "regime48")),
+        "head": "Particle number (3e5 over 1e5 particles, the same grid "
+                "and phases; the s^2 scaling holds where the ratio is 1 "
+                "within {z:g} sigma):",
+        "differs": "depends on N"},
+    "phaseLength": {
+        "pairs": (("regime32", "small"), ("regime64", "regime64short")),
+        "head": "Phase lengths (the paper's 240/100/520/200 T* over "
+                "small's 60/10/30/60, the same grid and particles; the "
+                "phases do not matter where the ratio is 1 within {z:g} "
+                "sigma):",
+        "differs": "depends on the phases"},
+}
+#: The quantities compared, each with its sigma (key or function)
+NAMES = {"f_col_scaled": "f_col x s^2", "f_agg_scaled": "f_agg x s^2",
+         "alpha_f": "alpha_f"}
+#: Largest |z| consistent with no effect of the shortcut (two standard
+#: errors)
+Z_CONSISTENT = 2.0
+
+
+def sigma_of(m, q):
+    """The standard error of quantity q of one model's result m."""
+    if q == "alpha_f":
+        return trend.alpha_sigma(m)
+    return m["sigma_col_scaled" if q == "f_col_scaled"
+             else "sigma_agg_scaled"]
+
+
+def ratio(mv, mb, q):
+    """{"ratio", "sigma", "z", "consistent"} of quantity q, variant mv
+    over base mb; None where either value is 0 or has no sigma."""
+    v, b = mv[q], mb[q]
+    sv, sb = sigma_of(mv, q), sigma_of(mb, q)
+    if not v or not b or not sv or not sb:
+        return None
+    r = v / b
+    s = r * math.hypot(sv / v, sb / b)
+    z = (r - 1.0) / s
+    return {"ratio": r, "sigma": s, "z": z,
+            "consistent": abs(z) <= Z_CONSISTENT}
+
+
+def _near_wall(result):
+    return (result.get("concentration") or {}).get("nearWallOverCentre")
+
+
+def compare(res, models, check):
+    """Per pair of the check whose variant and base both finished in res
+    (run_post's): {"variant", "base", "nearWallOverCentre": [variant's,
+    base's], model: {q: ratio(...)}}; the pairs not yet comparable as
+    {"variant", "base", "missing": [names]}."""
+    done = {v["name"]: v["result"] for v in res["variants"]
+            if v["result"]}
+    out = []
+    for var, base in CHECKS[check]["pairs"]:
+        missing = [n for n in (var, base) if n not in done]
+        if missing:
+            out.append({"variant": var, "base": base, "missing": missing})
+            continue
+        row = {"variant": var, "base": base, "nearWallOverCentre":
+               [_near_wall(done[var]), _near_wall(done[base])]}
+        for m in models:
+            mv, mb = done[var]["models"][m], done[base]["models"][m]
+            row[m] = {q: ratio(mv, mb, q) for q in NAMES}
+        out.append(row)
+    return out
+
+
+def _g(x):
+    return "-" if x is None else f"{x:.3g}"
+
+
+def lines(pairs, models, check):
+    """The lines of regime.txt of one check."""
+    c = CHECKS[check]
+    out = [c["head"].format(z=Z_CONSISTENT)]
+    for p in pairs:
+        head = f"  {p['variant']} over {p['base']}"
+        if "missing" in p:
+            out.append(f"{head}: n/r ({', '.join(p['missing'])} not "
+                       "finished)")
+            continue
+        for m in models:
+            parts = []
+            for q, name in NAMES.items():
+                r = p[m][q]
+                parts.append(
+                    f"{name} n/r (no events or no sigma)" if not r else
+                    f"{name} {r['ratio']:.2f} +- {r['sigma']:.2f} (z "
+                    f"{r['z']:+.1f}: "
+                    + ("consistent" if r["consistent"]
+                       else c["differs"]) + ")")
+            out.append(f"{head} {m}: " + "; ".join(parts))
+        cv, cb = p["nearWallOverCentre"]
+        out.append(f"{head}: c_w/c_0 at the start of agglomeration "
+                   f"{_g(cv)} / {_g(cb)}")
+    return out
