@@ -16,7 +16,9 @@ variant of the smallest worst factor, and, per model and quantity, where
 the trend's 68 % band at 128^3 (channelRegimeTrend) lies against the
 factor: 'within' (all of it), 'overlaps' or 'outside', and what the
 regime needs by the trend (channelRegimeNeeds): the grid where each
-value, and all four, lie within the factor, and the cost of a C1 there;
+value, and all four, lie within the factor, and the cost of a C1 there
+(also where variants are in the regime but none is affordable: where
+the trend enters the regime is the cheapest grid it points to);
 with three grids, the same read off the finest two grids' law too
 (channelRegimeTrend.finest_pair)."""
 
@@ -108,12 +110,13 @@ def lines(vd, models):
         out.append("  no variant has finished")
     elif vd["preset"]:
         out.append(f"  the preset in the regime: {vd['preset']}")
-    elif any(j["inRegime"] for j in vd["variants"]):
-        out.append("  in the regime, none affordable: " + ", ".join(
-            j["name"] for j in vd["variants"] if j["inRegime"]))
     else:
-        out.append(f"  no finished variant is in the regime; closest: "
-                   f"{vd['closest']}")
+        if any(j["inRegime"] for j in vd["variants"]):
+            out.append("  in the regime, none affordable: " + ", ".join(
+                j["name"] for j in vd["variants"] if j["inRegime"]))
+        else:
+            out.append(f"  no finished variant is in the regime; closest:"
+                       f" {vd['closest']}")
         out.append("  the grid trend's 68 % band at 128^3 against the "
                    "factor: " + "; ".join(
                        f"{m} {needs.NAMES[q]} {c or 'n/r'}"

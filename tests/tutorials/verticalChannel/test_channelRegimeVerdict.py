@@ -108,10 +108,22 @@ def test_none_in_the_regime_the_closest_and_the_trend(vd):
 
 
 def test_in_the_regime_but_none_affordable(vd):
-    v = vd.verdict({"variants": [variant("regime64", 1.2, 0.8, 30.0)]},
-                   ("EAM",))
+    """In the regime at 15 h on 2 cores: no preset, and what the regime
+    needs by the trend (where it enters: the cheapest grid it points to)
+    follows as where none is in the regime. EAM f_col x s^2 = n 10 / 64
+    (at 64: 10, the paper's value 10) lies within [5, 20] for n 32-128."""
+    law = {"low": 18.0, "high": 22.0, "paper": 10.0, "value": 20.0,
+           "a": math.log(10.0 / 64), "b": 1.0,
+           "cov": [[0.01, 0.0], [0.0, 0.01]], "p": None}
+    v = vd.verdict({"variants": [variant("regime64", 1.2, 0.8, 30.0)],
+                    "gridTrend": {"EAM": {"f_col_scaled": law,
+                                          "alpha_f": None}}}, ("EAM",))
     assert v["preset"] is None
-    assert "in the regime, none affordable: regime64" in \
-        "\n".join(vd.lines(v, ("EAM",)))
+    text = "\n".join(vd.lines(v, ("EAM",)))
+    assert "in the regime, none affordable: regime64" in text
+    assert "no finished variant is in the regime" not in text
+    assert "the grid trend's 68 % band at 128^3 against the factor: EAM " \
+        "f_col x s^2 overlaps; EAM alpha_f n/r" in text
+    assert "EAM f_col x s^2: within for n 32-128" in text
     assert vd.lines(vd.verdict({"variants": []}, ("EAM",)),
                     ("EAM",))[1] == "  no variant has finished"
