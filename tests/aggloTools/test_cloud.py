@@ -121,6 +121,25 @@ def test_coordinates_locate_the_written_positions(runs, fmt):
                                atol=1e-12 * max(L))
 
 
+def test_particles_appended_to_a_cloud_without_positions(runs, tmp_path):
+    """A cloud written without the legacy positions file (writePositions
+    off): appended particles follow the particles located from the
+    barycentric coordinates, which become a positions file."""
+    c = tmp_path / "case"
+    shutil.copytree(runs["binary"], c)
+    t = times.last_time(c)
+    d = cloud.cloud_dir(c, t)
+    x = cloud.read_positions(d / "positions")
+    (d / "positions").unlink()
+    new = np.array([(1e-4, 2e-4, 3e-4)])
+    assert cloud.append_particles(c, t, "kinematicCloud", new,
+                                  {"d": np.array([1e-5])}) == len(x)
+    np.testing.assert_allclose(cloud.read_positions(d / "positions"),
+                               np.vstack((x, new)), rtol=0,
+                               atol=1e-12 * max(L))
+    assert cloud.read_lagrangian(d / "d")[-1] == 1e-5
+
+
 def test_coordinates_in_processor_folders(tmp_path, foam_env):
     """Each processor folder locates its particles in its own mesh: the
     positions its legacy file holds."""

@@ -77,3 +77,23 @@ def test_cloud_named_by_another_record_missing(tmp_path):
     for d in ("lagrangian/MAM", "uniform/lagrangian/MAM"):
         shutil.rmtree(tmp_path / "0.002" / d)
     assert times.incomplete_time(tmp_path) == tmp_path / "0.004"
+
+
+def test_first_write_without_the_fluid_is_cut_off(tmp_path):
+    """A kill at the first write of a run: uniform/time and the cloud's
+    record written, U and p not. The start has U, p, nut, the cell
+    centres of postProcess and a cloud's source field; the first write
+    must have U, p and nut (not the others) to be complete."""
+    _write(tmp_path, "0", ["EAM"], 3)
+    for f in ("p", "nut", "C", "Cx", "particles:UTrans"):
+        _file(tmp_path / "0" / f, f)
+    _write(tmp_path, "0.002", ["EAM"], 3)
+    (tmp_path / "0.002" / "U").unlink()
+    assert times.incomplete_time(tmp_path) == tmp_path / "0.002"
+    for f in ("U", "p"):
+        _file(tmp_path / "0.002" / f, f)
+    assert times.incomplete_time(tmp_path) == tmp_path / "0.002"   # nut
+    _file(tmp_path / "0.002" / "nut", "nut")
+    assert times.incomplete_time(tmp_path) is None
+    moved = times.set_aside_incomplete_times(tmp_path)
+    assert moved == []

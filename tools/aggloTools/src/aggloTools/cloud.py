@@ -187,9 +187,10 @@ def append_particles(case, time, cloud, x, new):
     of new (field name -> array) or zeros; the cloud is rewritten in the
     legacy positions form (located on reading: any `coordinates` file is
     removed and cloudProperties says `geometry positions`). Returns the
-    number of particles that were there before."""
+    number of particles that were there before. The cloud may have been
+    written with or without the legacy positions file."""
     cdir = Path(case) / str(time) / "lagrangian" / cloud
-    x0 = read_positions(cdir / "positions")
+    x0 = cloud_positions(case, time, cloud)
     n0, n = len(x0), len(x)
     loc = f"{time}/lagrangian/{cloud}"
     for f in sorted(cdir.iterdir()):

@@ -107,12 +107,31 @@ def _expected_files(previous, last):
                     and f.parts[1] in empty)}
 
 
+#: Fields that utilities add to a start time and a solver never writes
+#: (postProcess -func writeCellCentres, writeCellVolumes)
+CELL_GEOMETRY = {"C", "Cx", "Cy", "Cz", "V"}
+
+
+def _name(f):
+    return f.name[:-3] if f.name.endswith(".gz") else f.name
+
+
+def _start_fields(start):
+    """The fields of a start time that the first write of a run must have
+    too: its field files but the cell geometry and the fields of a cloud
+    (`<cloud>:<field>`: the cloud of the next stage may have another
+    name, and a cloud writes them only where it is coupled)."""
+    return {_name(f) for f in start.iterdir() if f.is_file()
+            and _name(f) not in CELL_GEOMETRY and ":" not in f.name}
+
+
 def incomplete_time(case):
     """The latest time folder of a case (or of one processor folder) if
     its write was cut off, else None: a file without its end divider, no
-    uniform/time, a cloud's files that disagree with its record, or a
-    file of the previous write missing. The first folder (the start) is
-    never judged."""
+    uniform/time, a cloud's files that disagree with its record, a file
+    of the previous write missing or, at the first write of a run (the
+    previous folder is the start), a field of the start missing. The
+    first folder (the start) is never judged."""
     times = time_dirs(case)
     if len(times) < 2:
         return None
@@ -125,6 +144,9 @@ def incomplete_time(case):
         return last
     if len(times) > 2 and not _expected_files(previous, last) \
             <= _files(last):
+        return last
+    if len(times) == 2 and not _start_fields(previous) <= {
+            _name(f) for f in last.iterdir() if f.is_file()}:
         return last
     return None
 
