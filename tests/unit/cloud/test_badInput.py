@@ -131,6 +131,10 @@ CASES = {
                       "profile"),
     "statisticsBins": (STATS, STATS.replace("}", "profiles true; "
                        "direction (0 1 0); nBins 0; }"), "nBins"),
+    # a count that only bounds memory: 1e8 bins took about 23 GB
+    "statisticsBinsHuge": (STATS, STATS.replace("}", "profiles true; "
+                           "direction (0 1 0); nBins 100000000; }"),
+                           "nBins = 100000000 is out of range [1, 100000]"),
     "statisticsDirection": (STATS, STATS.replace("}", "profiles true; "
                             "direction (0 0 0); nBins 4; }"), "direction"),
     # break-up (absent: none): a misspelt key would leave it off
