@@ -3,6 +3,7 @@ entry of a presets file or of a generated caseSettings stops the
 tutorial's script naming the entry, and the shear tutorial's step
 dt*gammaDot out of its range stops its set-up naming the range."""
 
+import re
 import shutil
 import subprocess
 import sys
@@ -96,3 +97,96 @@ def test_case_settings_reject_unknown_entries(tmp_path, foam_env, tutorial,
     f.write_text(text + "\nnParticels 10;\n")
     with pytest.raises(SystemExit, match="nParticels"):
         module.read_settings(tmp_path)
+
+
+def _edited(tmp_path, tutorial, block, entry, value):
+    """A copy of the tutorial whose presets file has entry set to value in
+    block (a preset or common)."""
+    case = tmp_path / tutorial
+    shutil.copytree(ROOT / "tutorials" / tutorial, case,
+                    ignore=shutil.ignore_patterns("runs", "results"))
+    presets = case / "presets"
+    text = presets.read_text()
+    start = text.index(block)
+    end = text.index("}", start)
+    body = text[start:end]
+    lines = [ln for ln in body.splitlines()
+             if ln.strip().split(" ")[0] == entry]
+    new = (body.replace(lines[0], f"    {entry} {value};", 1) if lines
+           else body + f"    {entry} {value};\n")
+    presets.write_text(text[:start] + new + text[end:])
+    return case
+
+
+@pytest.mark.parametrize("block, entry, value, words", [
+    ("smoke\n{", "dtStar", "abc", "'abc' is not a number"),
+    ("smoke\n{", "dtStar", "0", "'0' is out of range (0, 1]"),
+    ("smoke\n{", "nParticles", "abc", "'abc' is not a number"),
+    ("smoke\n{", "nParticles", "-5", "'-5' is out of range [1, inf)"),
+    ("smoke\n{", "nParticles", "2000.7", "'2000.7' is not a whole number"),
+    ("smoke\n{", "n", "(16 16)", "needs 3 numbers"),
+    ("smoke\n{", "window", "(0.6 0)", "window (0.6 0) must lie inside"),
+    ("smoke\n{", "window", "(0 5)", "window (0 5) must lie inside"),
+    ("smoke\n{", "release", "-1", "'-1' is out of range [0, inf)"),
+    ("smoke\n{", "profileBins", "1e8", "out of range [1, 100000]"),
+    ("common\n{", "seed", "1.5", "'1.5' is not a whole number"),
+])
+def test_channel_preset_values_checked(tmp_path, foam_env, block, entry,
+                                       value, words):
+    """A preset value of the wrong type or out of range stops channel.py
+    before anything runs, naming the preset, the entry and what it must
+    be: before, 'abc', 0 and '(16 16)' ended in tracebacks, -5 particles
+    failed after the unladen stage, 2000.7 was truncated, and a reversed
+    window or a negative phase was accepted."""
+    case = _edited(tmp_path, "verticalChannel", block, entry, value)
+    res = subprocess.run([sys.executable, "channel.py", "settings", "smoke",
+                          "C1", "agglomeration"], cwd=case,
+                         capture_output=True, text=True)
+    assert res.returncode == 1, res.stdout[-500:]
+    assert "Traceback" not in res.stderr, res.stderr
+    assert entry in res.stderr and words in res.stderr, res.stderr
+
+
+@pytest.mark.parametrize("entry, value, words", [
+    ("subModels", "onn", "'onn' is not one of: on off"),
+    ("wall", "rouhg", "'rouhg' is not one of: smooth rough"),
+    ("en", "1.5", "'1.5' is out of range [0, 1]"),
+    ("d", "-1e-6", "out of range (0, inf)"),
+])
+def test_channel_configuration_values_checked(tmp_path, foam_env, entry,
+                                              value, words):
+    """A configuration's entries are checked as the presets' are: a
+    misspelt subModels switched the sub-models off silently."""
+    case = tmp_path / "verticalChannel"
+    shutil.copytree(ROOT / "tutorials" / "verticalChannel", case,
+                    ignore=shutil.ignore_patterns("runs", "results"))
+    presets = case / "presets"
+    text = presets.read_text()
+    line = [ln for ln in text.splitlines() if ln.startswith("    C2  {")][0]
+    new = re.sub(rf"\b{entry} [^;]*;", f"{entry} {value};", line)
+    assert new != line
+    presets.write_text(text.replace(line, new, 1))
+    res = subprocess.run([sys.executable, "channel.py", "settings", "smoke",
+                          "C2", "agglomeration"], cwd=case,
+                         capture_output=True, text=True)
+    assert res.returncode == 1
+    assert "Traceback" not in res.stderr, res.stderr
+    assert "configurations/C2" in res.stderr and entry in res.stderr
+    assert words in res.stderr, res.stderr
+
+
+@pytest.mark.parametrize("entry, value, words", [
+    ("writes", "0", "'0' is out of range [1, inf)"),
+    ("nParticles", "abc", "'abc' is not a number"),
+    ("nx", "10.5", "'10.5' is not a whole number"),
+])
+def test_shear_preset_values_checked(tmp_path, foam_env, entry, value,
+                                     words):
+    """The shear tutorial's presets likewise (writes 0 divided by zero)."""
+    case = _edited(tmp_path, "shearFlowValidation", "ci\n{", entry, value)
+    res = subprocess.run([sys.executable, "shearFlow.py", "settings", "ci",
+                          "EAM"], cwd=case, capture_output=True, text=True)
+    assert res.returncode == 1, res.stdout[-500:]
+    assert "Traceback" not in res.stderr, res.stderr
+    assert f"presets/ci: {entry}" in res.stderr and words in res.stderr, \
+        res.stderr

@@ -40,10 +40,26 @@ COMMON_KEYS = {"gammaDot", "delta", "LzByDelta", "ny", "nz", "dParticle",
                "eventLog", "fluidTorque"}
 
 
+N = casesettings.Number
+#: What each numeric entry must be (the steps: check_step)
+NUMBERS = {"nx": N(int, 1), "ny": N(int, 1), "nz": N(int, 1),
+           "LxByDelta": N(float, 0, open_lo=True),
+           "LzByDelta": N(float, 0, open_lo=True), "nParticles": N(int, 1),
+           "endGamma": N(float, 0, open_lo=True),
+           "detectEndGamma": N(float, 0, open_lo=True), "writes": N(int, 1),
+           "gammaDot": N(float, 0, open_lo=True),
+           "delta": N(float, 0, open_lo=True),
+           "dParticle": N(float, 0, open_lo=True), "seed": N(int, 0),
+           "countFromGamma": N(float, 0)}
+
+
 def presets():
-    """The presets file, every entry checked."""
-    return casesettings.read_presets(HERE / "presets", PRESET_KEYS,
-                                     {"common": COMMON_KEYS})
+    """The presets file, every entry checked (its keys, and the numbers
+    of NUMBERS: type and range)."""
+    ps = casesettings.read_presets(HERE / "presets", PRESET_KEYS,
+                                   {"common": COMMON_KEYS})
+    return {name: casesettings.checked(p, NUMBERS, f"presets/{name}")
+            for name, p in ps.items()}
 
 
 def on_off(v, where):

@@ -59,13 +59,6 @@ PI = math.pi
 
 # ---------------------------------------------------------------- settings
 
-def _nums(v):
-    """A parsed list value such as ['(128', 128, '128)'] as floats."""
-    if not isinstance(v, list):
-        v = [v]
-    return [float(str(x).strip("()")) for x in v if str(x).strip("()")]
-
-
 COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
                "ddtScheme", "seed", "writeFormat", "writePositions",
                "purgeWrite", "eventLog"}
@@ -73,6 +66,23 @@ PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "unladen", "release", "dispersion", "agglomeration", "window",
                "writeStar", "profileBins", "seededPairs"} | COMMON_KEYS
 CONFIGURATION_KEYS = {"subModels", "wall", "d", "en"}
+N = casesettings.Number
+#: What each numeric entry must be (the window is checked against the
+#: agglomeration phase in preset())
+PRESET_NUMBERS = {
+    "n": N(int, 1, n=3), "yGrading": N(float, 0, open_lo=True),
+    "dtStar": N(float, 0, 1, open_lo=True), "nParticles": N(int, 1),
+    "couplingScale": N(float, 0, open_lo=True),
+    "unladen": N(float, 0), "release": N(float, 0),
+    "dispersion": N(float, 0), "agglomeration": N(float, 0),
+    "window": N(float, 0, n=2), "writeStar": N(float, 0, open_lo=True),
+    "profileBins": N(int, 1, 100000), "seededPairs": N(int, 0),
+    "delta": N(float, 0, open_lo=True), "Ubar": N(float, 0, open_lo=True),
+    "nu": N(float, 0, open_lo=True), "rhoInf": N(float, 0, open_lo=True),
+    "rhoParticle": N(float, 0, open_lo=True), "perturb": N(float, 0),
+    "seed": N(int, 0), "purgeWrite": N(int, 0)}
+CONFIGURATION_NUMBERS = {"d": N(float, 0, open_lo=True),
+                         "en": N(float, 0, 1)}
 
 
 def read_presets():
@@ -84,12 +94,18 @@ def read_presets():
 
 def preset(name):
     """The merged settings of a preset (common values first)."""
-    p = casesettings.merged(read_presets(), name, "channel.py",
-                            exclude=("configurations",))
+    p = casesettings.checked(
+        casesettings.merged(read_presets(), name, "channel.py",
+                            exclude=("configurations",)),
+        PRESET_NUMBERS, f"channel.py: presets/{name}")
     p["name"] = name
     p.setdefault("seededPairs", 0)
-    p["n"] = [int(x) for x in _nums(p["n"])]
-    p["window"] = _nums(p["window"])
+    lo, hi = p["window"]
+    agg = p["agglomeration"]
+    if not lo < hi <= agg:
+        sys.exit(f"channel.py: presets/{name}: window ({lo:g} {hi:g}) must"
+                 f" lie inside the agglomeration phase (0 {agg:g}) and end"
+                 " after it starts")
     p["tScale"] = p["delta"] / p["Ubar"]            # delta/U_B [s]
     p["deltaT"] = p["dtStar"] * p["tScale"]
     p["L"] = (2 * PI * p["delta"], 2 * p["delta"], PI * p["delta"])
@@ -98,15 +114,18 @@ def preset(name):
     for key, valid in choices.items():
         casesettings.choice(p[key], valid,
                             f"channel.py: presets/{name}: {key}")
-    if not isinstance(p["purgeWrite"], int) or p["purgeWrite"] < 0:
-        sys.exit(f"channel.py: presets/{name}: purgeWrite '{p['purgeWrite']}'"
-                 " must be an integer >= 0 (0 keeps every write)")
     return p
 
 
 def configuration(name):
-    c = dict(casesettings.named(read_presets()["configurations"], name,
-                                "configuration", "channel.py"))
+    c = casesettings.checked(
+        casesettings.named(read_presets()["configurations"], name,
+                           "configuration", "channel.py"),
+        CONFIGURATION_NUMBERS, f"channel.py: presets/configurations/{name}")
+    for key, valid in (("subModels", ("on", "off")),
+                       ("wall", ("smooth", "rough"))):
+        casesettings.choice(c[key], valid, f"channel.py: presets/"
+                            f"configurations/{name}: {key}")
     c["name"] = name
     c["twoWay"] = c["subModels"] == "on"
     return c

@@ -70,3 +70,61 @@ def read_settings(case, keys):
     s = read_dict(f)
     check_keys(s, keys, str(f))
     return s
+
+
+class Number:
+    """How a numeric entry of a presets file is checked (checked()): a
+    whole number (integer) or a real one, n of them (a list `(a b c)`
+    where n > 1), each within [lo, hi] (None: unbounded; open_lo: lo
+    excluded)."""
+
+    def __init__(self, kind, lo=None, hi=None, open_lo=False, n=1):
+        self.kind, self.lo, self.hi = kind, lo, hi
+        self.open_lo, self.n = open_lo, n
+
+    def range(self):
+        lo = "-inf" if self.lo is None else f"{self.lo:g}"
+        hi = "inf" if self.hi is None else f"{self.hi:g}"
+        return f"{'(' if self.open_lo or self.lo is None else '['}{lo}, " \
+               f"{hi}{']' if self.hi is not None else ')'}"
+
+    def one(self, v, where):
+        try:
+            x = float(str(v))
+        except ValueError:
+            raise SystemExit(f"{where} '{v}' is not a number") from None
+        if self.kind is int:
+            if x != int(x):
+                raise SystemExit(f"{where} '{v}' is not a whole number")
+            x = int(x)
+        elif isinstance(v, int):
+            x = v                   # as written (60, not 60.0)
+        if x != x or (self.lo is not None and (
+                x < self.lo or (self.open_lo and x == self.lo))) or (
+                self.hi is not None and x > self.hi):
+            raise SystemExit(f"{where} '{v}' is out of range {self.range()}")
+        return x
+
+    def value(self, v, where):
+        if self.n == 1:
+            if isinstance(v, list):
+                raise SystemExit(f"{where} '{' '.join(map(str, v))}' is not"
+                                 " one number")
+            return self.one(v, where)
+        text = " ".join(map(str, v if isinstance(v, list) else [v]))
+        words = text.replace("(", " ").replace(")", " ").split()
+        if len(words) != self.n:
+            raise SystemExit(f"{where} '{text}' needs {self.n} numbers: "
+                             f"({' '.join(['x'] * self.n)})")
+        return [self.one(w, where) for w in words]
+
+
+def checked(p, spec, where):
+    """p with each entry that spec (key -> Number) names converted and
+    checked; the first bad one stops naming where/key, the value and
+    what it must be (a number, a whole number, its range, its count)."""
+    out = dict(p)
+    for key, num in spec.items():
+        if key in out:
+            out[key] = num.value(out[key], f"{where}: {key}")
+    return out
