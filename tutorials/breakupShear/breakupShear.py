@@ -7,25 +7,30 @@ criterion predicts the size at which erosion stops (breakupTheory); the
 fragments' collisions with the agglomerates add spin and slip, so the
 simulated sizes end at or below it.
 
-    python breakupShear.py [-preset default|ci] [-j N] [-post]
-                           [-reference]
+    ./Allrun [-preset default|ci] [-j N] [-post] [-reference] [-every S]
 
-Runs: runs/<preset>/gamma<g> (kept; a finished run is not run again).
+Runs: runs/<preset>/<series>-gamma<g> (a finished run is kept; an
+interrupted one continues from its last complete write, a write cut off
+by a kill set aside; one driver at a time per preset: runs/<preset> is
+locked while it runs).
 Report: runs/<preset>/report (-reference: results/<preset>): summary.json,
 table.txt, sizes.png, distribution.png, criterion.png. Exit status 1 if
 a row FAILs."""
 
-import argparse
+import contextlib
+import io
 import json
 import math
+import shutil
 import sys
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import numpy as np
 
-from aggloTools import boxcase
+from aggloTools import boxcase, stages, times
 from aggloTools.cloud import read_cloud
+from aggloTools.progress import line, solver_progress
+from aggloTools.runner import foam_bin
 from aggloTools.stats import read_stats
 from aggloTools.times import last_time
 
@@ -104,13 +109,34 @@ def finished(case):
         and stats.is_dir()
 
 
-def run_one(case, series, gamma, p):
+def run_one(case, series, gamma, p, every=60):
+    """Set up and run one case, continue it from its last complete write
+    (a write cut off by a kill set aside) or keep it if it finished."""
+    tag = f"    {case.name}"
     if finished(case):
-        return f"{case.name}: finished earlier, kept"
-    if not (case / "system").is_dir():
+        print(f"{tag}: finished earlier, kept", flush=True)
+        return
+    if not (case / "constant" / "polyMesh" / "faces").is_file():
+        shutil.rmtree(case, ignore_errors=True)
         build(case, series, gamma, p)
-    boxcase.run_case(case)
-    return f"{case.name}: done"
+        stages.run_logged([foam_bin("blockMesh")], case, "log.blockMesh")
+        append = False
+    else:
+        said = io.StringIO()
+        with contextlib.redirect_stdout(said):
+            times.set_aside_incomplete_times(case)
+        for line in said.getvalue().splitlines():
+            print(f"{tag}: {line}", flush=True)
+        print(f"{tag}: continuing from the last written time", flush=True)
+        append = True
+
+    def progress(c):
+        at = solver_progress(c / "log.aggloPimpleFoam", p["end"], p["dt"])
+        return "starting" if at is None else \
+            f"t = {at[0]:.4g} s of {p['end']:g} s {line(at[1], at[2])}"
+    wall = stages.run_solver(case, [foam_bin("aggloPimpleFoam")],
+                             case.name, progress, every, append=append)
+    print(f"{tag}: done in {round(wall)} s", flush=True)
 
 
 def case_name(series, gamma):
@@ -263,29 +289,42 @@ def plots(all_rows, out):
     plt.close(fig)
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(prog="Allrun", description=__doc__,
-                                 formatter_class=argparse.
-                                 RawDescriptionHelpFormatter)
-    ap.add_argument("-preset", default="default", choices=sorted(PRESETS))
-    ap.add_argument("-j", type=int, default=2, help="runs at a time")
-    ap.add_argument("-post", action="store_true",
-                    help="only the report of the finished runs")
-    ap.add_argument("-reference", action="store_true",
-                    help="write the report into results/<preset>")
-    a = ap.parse_args(argv)
-    if a.j < 1:
-        ap.error("-j must be >= 1")
+def options(argv):
+    p = stages.Parser("breakupShear", __doc__)
+    p.add_argument("-preset", default="default", choices=sorted(PRESETS),
+                   help="the shear rates and sizes (default: default)")
+    p.add_argument("-j", type=stages.positive("-j"), default=2,
+                   help="runs at a time (default 2)")
+    p.add_argument("-post", action="store_true",
+                   help="only the report of the finished runs")
+    p.add_argument("-reference", action="store_true",
+                   help="write the report into results/<preset>")
+    p.add_argument("-every", type=stages.positive("-every"), default=60,
+                   help="seconds between progress lines (default 60)")
+    return p.parse_args(argv)
+
+
+def work(a):
     p = PRESETS[a.preset]
     base = HERE / "runs" / a.preset
     runs = [(s, g) for s in SERIES for g in p["gammas"]]
     cases = {r: base / case_name(*r) for r in runs}
 
     if not a.post:
-        base.mkdir(parents=True, exist_ok=True)
-        with ThreadPoolExecutor(a.j) as pool:
-            for msg in pool.map(lambda r: run_one(cases[r], *r, p), runs):
-                print("    " + msg, flush=True)
+        print(f"breakupShear: preset {a.preset}, {len(runs)} runs, {a.j} "
+              "at a time", flush=True)
+        with stages.one_run(base, f"breakupShear -preset {a.preset}"):
+            failed = stages.pool(
+                runs, lambda r: run_one(cases[r], *r, p, a.every), a.j)
+        if failed:
+            sys.stderr.write("Allrun: a run failed\n")
+            return 1
+    missing = [c.name for c in cases.values() if not finished(c)]
+    if missing:
+        sys.stderr.write(f"Allrun: no finished run of {' '.join(missing)} "
+                         f"under {base}: run ./Allrun -preset {a.preset} "
+                         "first\n")
+        return 1
 
     rows = [analyse(cases[r], *r, p) for r in runs]
     out = HERE / "results" / a.preset if a.reference else base / "report"
@@ -298,6 +337,11 @@ def main(argv=None):
     plots(rows, out)
     print(text + f"Results: {out}")
     return 1 if any(r["verdict"] == "FAIL" for r in rows) else 0
+
+
+def main(argv=None):
+    return stages.drive(HERE, options, work,
+                        sys.argv[1:] if argv is None else argv)
 
 
 if __name__ == "__main__":

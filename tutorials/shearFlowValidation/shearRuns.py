@@ -136,7 +136,10 @@ def work(a):
                   f"{run_dir(a, run).relative_to(HERE)}/"
                   "log.aggloPimpleFoam)", flush=True)
             run_one(a, run)
-        if stages.pool(runs, one, a.j):
+        with stages.one_run(HERE / "runs" / a.preset,
+                            f"shearFlowValidation -preset {a.preset}"):
+            failed = stages.pool(runs, one, a.j)
+        if failed:
             sys.stderr.write("Allrun: a run failed\n")
             return 1
 

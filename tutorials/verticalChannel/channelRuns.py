@@ -190,6 +190,28 @@ class Channel:
                         pass
 
 
+def run_stages(run, configs):
+    """The unladen stage and each configuration's stages; 1 if one
+    failed (said which), else 0."""
+    a = run.a
+    print(f"verticalChannel: preset {a.preset}, configurations: "
+          f"{' '.join(configs)}, {a.np} MPI rank(s)", flush=True)
+    try:
+        run.unladen()
+    except CommandError as e:
+        print(f"    unladen: {e}", flush=True)
+        sys.stderr.write("Allrun: the unladen stage failed\n")
+        return 1
+    for c in configs:
+        try:
+            run.configuration(c)
+        except CommandError as e:
+            print(f"    {c}: {e}", flush=True)
+            sys.stderr.write(f"Allrun: configuration {c} failed\n")
+            return 1
+    return 0
+
+
 def work(a):
     configs = a.configs.split()
     # The preset and the configurations checked before anything starts
@@ -200,23 +222,11 @@ def work(a):
         sys.stderr.write(f"{e}\n")
         return 1
     if not a.post:
-        print(f"verticalChannel: preset {a.preset}, configurations: "
-              f"{' '.join(configs)}, {a.np} MPI rank(s)", flush=True)
         run = Channel(a)
-        run.base.mkdir(parents=True, exist_ok=True)
-        try:
-            run.unladen()
-        except CommandError as e:
-            print(f"    unladen: {e}", flush=True)
-            sys.stderr.write("Allrun: the unladen stage failed\n")
-            return 1
-        for c in configs:
-            try:
-                run.configuration(c)
-            except CommandError as e:
-                print(f"    {c}: {e}", flush=True)
-                sys.stderr.write(f"Allrun: configuration {c} failed\n")
-                return 1
+        with stages.one_run(run.base, f"verticalChannel -preset {a.preset}"):
+            status = run_stages(run, configs)
+        if status:
+            return status
 
     ref = ["--reference"] if a.reference else []
     print(flush=True)

@@ -9,7 +9,9 @@ import subprocess
 
 import pytest
 
+from aggloTools import times
 from aggloTools.runner import project_dir, tutorial_module
+from runLocks import lock_text
 
 TUT = project_dir() / "tutorials" / "breakupShear"
 theory = tutorial_module("breakupShear", "breakupTheory")
@@ -82,6 +84,37 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
     for png in ("sizes.png", "distribution.png", "criterion.png"):
         assert (tut / "runs/ci/report" / png).stat().st_size > 10000
 
+    # A write cut off by a kill: the run continues from the write before
+    # it, to the same end (before, every later call ended in a traceback)
+    case = tut / "runs/ci/shear-gamma5e+05"
+    last = times.time_dirs(case)[-1]
+    (last / "U").write_bytes((last / "U").read_bytes()[:200])
+    log = case / "log.aggloPimpleFoam"
+    log.write_text(log.read_text().replace("\nEnd\n", "\n"))
+    res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=600)
+    assert res.returncode == 0, res.stdout[-3000:]
+    assert f"write of time {last.name} was cut off" in res.stdout
+    assert "finished earlier, kept" in res.stdout       # the other three
+    again = json.loads((tut / "runs/ci/report/summary.json").read_text())
+    assert again["rows"] == rows
+
+    # One driver at a time: a live run's lock refuses a second driver
+    holder = subprocess.Popen(["sleep", "60"])
+    try:
+        lock = tut / "runs/ci/.aggloRun.lock"
+        lock.write_text(lock_text(holder.pid))
+        res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
+                             capture_output=True, text=True, timeout=60)
+        assert res.returncode == 1
+        assert "is in use by another run" in res.stderr, res.stderr
+        assert f"process {holder.pid} runs" in res.stderr
+    finally:
+        holder.kill()
+        holder.wait()
+    lock.unlink()
+
     # The gate: a prediction one primary smaller must fail
     patched = tut / "breakupTheory.py"
     patched.write_text(patched.read_text().replace(
@@ -92,3 +125,31 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
                          text=True, timeout=600)
     assert res.returncode == 1, res.stdout[-3000:]
     assert "FAIL" in res.stdout
+
+
+def test_driver_help_and_refusals(tmp_path, foam_env):
+    """-help prints the options and exits 0; -post before any run and a
+    solver that fails end with one line, exit status 1, no traceback."""
+    tut = tmp_path / "breakupShear"
+    shutil.copytree(TUT, tut, ignore=shutil.ignore_patterns(
+        "runs", "results", "__pycache__"))
+    res = subprocess.run(["./Allrun", "-help"], cwd=tut,
+                         capture_output=True, text=True)
+    assert res.returncode == 0 and "-preset" in res.stdout
+    res = subprocess.run(["./Allrun", "-preset", "ci", "-post"], cwd=tut,
+                         capture_output=True, text=True)
+    assert res.returncode == 1 and "Traceback" not in res.stderr
+    assert "no finished run of shear-gamma5e+05" in res.stderr
+    # a solver that cannot start: its controlDict names no application
+    theory = tut / "breakupShear.py"
+    theory.write_text(theory.read_text().replace(
+        '    stages.run_logged([foam_bin("blockMesh")], case, '
+        '"log.blockMesh")',
+        '    stages.run_logged([foam_bin("blockMesh")], case, '
+        '"log.blockMesh")\n        (case / "system/fvSolution").unlink()'))
+    res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
+                         capture_output=True, text=True, timeout=300)
+    assert res.returncode == 1, res.stdout[-2000:]
+    assert "Traceback" not in res.stderr + res.stdout
+    assert "Allrun: a run failed" in res.stderr
+    assert "aggloPimpleFoam failed, see" in res.stdout

@@ -23,7 +23,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from . import times
+from . import runlock, times
 from .runner import CommandError
 
 _children = set()
@@ -143,6 +143,7 @@ def _started(cmd, cwd, log, append):
                                 env=dict(os.environ, PWD=str(cwd)))
         with _lock:
             _children.add(proc)
+        runlock.register(proc.pid)
         try:
             yield proc
         finally:
@@ -281,6 +282,19 @@ def drive(here, options, work, argv):
     os.chdir(here)
     a = options(argv)
     return interruptible(lambda: work(a))
+
+
+@contextlib.contextmanager
+def one_run(folder, what):
+    """The run folder's lock held while the block runs (runlock): a
+    second driver on the folder is refused with the holder named, exit
+    status 1 (raised as SystemExit)."""
+    try:
+        with runlock.held(folder, what):
+            yield
+    except runlock.Busy as e:
+        sys.stderr.write(f"Allrun: {e}\n")
+        raise SystemExit(1) from None
 
 
 def interruptible(main):
