@@ -61,3 +61,32 @@ def test_main_job_refused_option_says_failed(foam_env):
     assert res.returncode == 1, res.stdout + res.stderr
     assert "Main job failed (exit status 1)" in res.stdout
     assert "Main job done" not in res.stdout and "Report:" not in res.stdout
+
+
+@pytest.mark.parametrize("tutorial, preset", [
+    ("verticalChannel", "smoke"), ("shearFlowValidation", "ci")])
+def test_second_driver_on_a_run_folder_refused(tmp_path, foam_env,
+                                               tutorial, preset):
+    """A run folder in use (a live run's lock) refuses a second driver
+    before it touches anything, naming the holder: two drivers on one
+    folder appended to one event log (992 events against the run's 496)
+    and reported PASS from doubled counts."""
+    import shutil
+    from runLocks import lock_text
+    tut = tmp_path / tutorial
+    shutil.copytree(TUT / tutorial, tut, ignore=shutil.ignore_patterns(
+        "runs", "results", "__pycache__"))
+    base = tut / "runs" / preset
+    base.mkdir(parents=True)
+    holder = subprocess.Popen(["sleep", "60"])
+    try:
+        (base / ".aggloRun.lock").write_text(lock_text(holder.pid))
+        res = subprocess.run(["./Allrun", "-preset", preset], cwd=tut,
+                             capture_output=True, text=True, timeout=120)
+    finally:
+        holder.kill()
+        holder.wait()
+    assert res.returncode == 1, res.stdout[-2000:]
+    assert "is in use by another run" in res.stderr
+    assert f"process {holder.pid} runs" in res.stderr
+    assert sorted(p.name for p in base.iterdir()) == [".aggloRun.lock"]

@@ -82,6 +82,7 @@ using namespace Foam;
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 #include "replayOutput.H"
+#include "replayLogCount.H"
 
 namespace
 {
@@ -237,6 +238,7 @@ int main(int argc, char *argv[])
                 << "; this build has " << mechanisms << exit(FatalError);
         }
     }
+    checkLogCount(runTime, cloudName, "breakupEventLog", dir, events.size());
     std::stable_sort
     (
         events.begin(), events.end(),

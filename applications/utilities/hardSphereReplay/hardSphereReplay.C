@@ -95,6 +95,7 @@ using namespace Foam;
 
 #include "replayConfiguration.H"
 #include "replayOutput.H"
+#include "replayLogCount.H"
 #include "writeEvents.H"
 #include "writeReplay.H"
 
@@ -182,6 +183,7 @@ int main(int argc, char *argv[])
         checkTarget("eventsOut", args.get<fileName>("eventsOut"), dir, logs);
     }
     DynamicList<collisionEvent> events;
+    label nLogged = 0;
     const label nFiles = logs.size();
     wordList loggedBranches;
     for (const fileName& f : logs)
@@ -203,6 +205,7 @@ int main(int argc, char *argv[])
                 << ", " << f << " " << branches << " (runs of different"
                 << " agglomeration models in one folder)" << exit(FatalError);
         }
+        nLogged += fileEvents.size();
         for (const collisionEvent& e : fileEvents)
         {
             if (which == "all" || e.category == 0)
@@ -218,6 +221,7 @@ int main(int argc, char *argv[])
             << "(run the case with eventLog true; in hardSphereCoeffs)"
             << exit(FatalError);
     }
+    checkLogCount(runTime, cloudName, "collisionEventLog", dir, nLogged);
     std::stable_sort
     (
         events.begin(), events.end(),

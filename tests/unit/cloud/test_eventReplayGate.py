@@ -257,3 +257,34 @@ def test_per_event_output(case_dir, foam_env):
     # EAM intermediates wherever the EAM decided (Eq. 21 terms finite)
     eam = ev["run.branch"] >= 0
     assert np.all(np.isfinite(ev["run.dEvdW"][eam]))
+
+
+def test_log_count_and_foreign_targets(case_dir, foam_env):
+    """A log with more or fewer events than the run recorded at its
+    latest write is refused (two runs appending to one log doubled it and
+    -check passed); -json onto another cloud's event log is refused and
+    leaves it as it was (it was overwritten: 1.3 MB -> 330 B)."""
+    c = gas(case_dir / "gas")
+    run_case(c)
+    log = eventlog.folder(c) / "events0.bin"
+    whole = log.read_bytes()
+    n = len(eventlog.read_events(c))
+    head = len(whole) - n * eventlog.DTYPE.itemsize
+    for bad, count, words in ((whole + whole[head:], 2 * n,
+                               "more than one run appended"),
+                              (whole[:head], 0, "cut back or emptied")):
+        log.write_bytes(bad)
+        res = _replay_cmd(c, "-check")
+        assert res.returncode == 1, res.stdout[-1500:]
+        assert f"holds {count} events, but the run recorded {n}" \
+            in res.stdout and words in res.stdout
+    log.write_bytes(whole)
+    assert _replay_cmd(c, "-check").returncode == 0
+
+    other = c / "postProcessing" / "otherCollisionEvents"
+    other.mkdir()
+    shutil.copy(log, other / "events0.bin")
+    res = _replay_cmd(c, "-json", str(other / "events0.bin"))
+    assert res.returncode == 1
+    assert "is not an earlier output of -json" in res.stdout
+    assert (other / "events0.bin").read_bytes() == whole

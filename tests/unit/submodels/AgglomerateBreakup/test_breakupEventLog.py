@@ -162,3 +162,32 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     out = json.loads((breakuplog.folder(case)
                       / "breakupReplay.json").read_text())
     assert out["configurations"][0]["reproduced"] == len(ev) - 1
+
+    # A log with more or fewer events than the run recorded is refused:
+    # two runs appending to one log, a log emptied to its header
+    for bad, words in ((whole + whole[breakuplog.HEADER_BYTES:],
+                        "more than one run appended"),
+                       (whole[:breakuplog.HEADER_BYTES],
+                        "cut back or emptied")):
+        log.write_bytes(bad)
+        res = run([foam_bin("breakupReplay"), "-check"], case,
+                  "log.breakupReplay.count", check=False)
+        assert res.returncode == 1, res.stdout[-1500:]
+        n = (len(bad) - breakuplog.HEADER_BYTES) // breakuplog.DTYPE.itemsize
+        assert f"holds {n} events, but the run recorded {len(ev)}" \
+            in res.stdout
+        assert words in res.stdout
+    log.write_bytes(whole)
+    assert run([foam_bin("breakupReplay"), "-check"], case,
+               "log.breakupReplay.count").returncode == 0
+
+    # -json onto a file that is not an earlier replay output (another
+    # log: a collision event log) is refused and leaves it as it was
+    other = case / "events0.bin"
+    other.write_bytes(b"aggloCollisionEvents 2 recordBytes 220" + bytes(300))
+    res = run([foam_bin("breakupReplay"), "-json", str(other)], case,
+              "log.breakupReplay.json", check=False)
+    assert res.returncode == 1
+    assert "is not an earlier output of -json" in res.stdout
+    assert other.read_bytes().startswith(b"aggloCollisionEvents 2")
+    assert len(other.read_bytes()) == 338
