@@ -136,3 +136,26 @@ def test_decompose_takes_the_latest_folder_by_name(raised_digits, case_dir):
             ids += list(read_cloud(case / proc, "16.333317",
                                    names=["origId"])["origId"])
     assert sorted(ids) == [0, 1, 2]
+
+
+def test_decomposition_cut_off_is_done_again(raised_digits, case_dir):
+    """A decomposePar killed half-way leaves processor0 behind: the
+    driver took the folders for complete and never decomposed again
+    ('1077 particles read, but 2100 were written'). A case counts as
+    decomposed only by the marker written after decomposePar succeeded;
+    a failed decomposition removes it."""
+    case = case_dir / "cut"
+    shutil.copytree(raised_digits, case)
+    for entry, value in (("numberOfSubdomains", "2"), ("coeffs/n", "(2 1 1)")):
+        run([foam_bin("foamDictionary"), "-entry", entry, "-set", value,
+             "system/decomposeParDict"], case, "log.foamDictionary")
+    (case / "processor0").mkdir()            # what the kill left
+    assert not stages.decomposed(case)
+    stages.decompose(case)
+    assert stages.decomposed(case)
+    assert (case / stages.DECOMPOSED).read_text() == "2\n"
+    run([foam_bin("foamDictionary"), "-entry", "numberOfSubdomains", "-set",
+         "3", "system/decomposeParDict"], case, "log.foamDictionary")
+    with pytest.raises(CommandError):
+        stages.decompose(case)                # 3 subdomains, (2 1 1)
+    assert not stages.decomposed(case)

@@ -40,6 +40,7 @@ Run times on the 2-core development machine: README.md.
 
 import contextlib
 import io
+import shutil
 import subprocess
 import sys
 import time
@@ -96,7 +97,7 @@ class Channel:
             print(f"    {tag}: finished before, kept", flush=True)
             return
         self.settings(d, config, stage, models)
-        if np > 1 and not (d / "processor0").is_dir():
+        if np > 1 and not stages.decomposed(d):
             stages.decompose(d)
         # A write cut off by a kill is set aside (OpenFOAM would stop on it)
         said = io.StringIO()
@@ -149,7 +150,7 @@ class Channel:
                                "-time", t], d, "log.postProcess")
             # On several ranks the particles go straight into the processor
             # folders: the fluid is decomposed first, if not copied so
-            if np > 1 and not (d / "processor0").is_dir():
+            if np > 1 and not stages.decomposed(d):
                 stages.decompose(d)
             self.python(d, "release", "channelParticles.py", "release",
                         ".")
@@ -179,15 +180,26 @@ class Channel:
                             "seedPairs", ".", *models)
                 (adir / "branched").touch()
             self.stage(adir, "agglomeration", c, models)
-            if not (adir / "VTK").is_dir():
-                with contextlib.redirect_stdout(io.StringIO()):
-                    try:
-                        stages.run_logged(
-                            ["foamToVTK", "-latestTime", "-excludePatches",
-                             "(inlet outlet front back)"], adir,
-                            "log.foamToVTK")
-                    except CommandError:
-                        pass
+            self.vtk(adir)
+
+    @staticmethod
+    def vtk(d):
+        """foamToVTK of the stage's last time into d/VTK, once: a marker
+        written after it succeeded; a run cut off or failed leaves no
+        VTK/ (the next call writes it again) and fails the call."""
+        done = d / "VTK" / "done.foamToVTK"
+        if done.is_file():
+            return
+        shutil.rmtree(d / "VTK", ignore_errors=True)
+        try:
+            with contextlib.redirect_stdout(io.StringIO()):
+                stages.run_logged(
+                    ["foamToVTK", "-latestTime", "-excludePatches",
+                     "(inlet outlet front back)"], d, "log.foamToVTK")
+        except CommandError:
+            shutil.rmtree(d / "VTK", ignore_errors=True)
+            raise
+        done.write_text("foamToVTK -latestTime\n")
 
 
 def run_stages(run, configs):

@@ -45,7 +45,8 @@ def run_smoke(tmp, np_):
 def script(name):
     """A script of the tutorial as a module, after the siblings it
     imports (all of them, so that any script can be asked for)."""
-    for sibling in ("channel", "channelPlots", "channelRegression",
+    for sibling in ("channel", "channelParticles", "channelPlots",
+                    "channelRegression",
                     "channelPost", "channelRegimeTrend", "channelRegimePairs",
                     "channelRegimeNeeds", "channelRegimeVerdict",
                     "channelRegimeAnalysis",

@@ -126,7 +126,19 @@ def branch_case(src, dst, nprocs=1, serial=False, extra_constant=None):
                 shutil.copytree(p / part, dst / p.name / part)
             shutil.rmtree(dst / p.name / t / "uniform" / "functionObjects",
                           ignore_errors=True)
+        (dst / DECOMPOSED).write_text(f"{nprocs}\n")
     return t
+
+
+#: The marker of a case whose processor folders are complete: written
+#: when decomposePar has succeeded or the folders have been copied whole
+DECOMPOSED = "decomposed"
+
+
+def decomposed(case):
+    """True if the case's processor folders are complete (a decomposePar
+    killed half-way leaves processor0 without the marker)."""
+    return (Path(case) / DECOMPOSED).is_file()
 
 
 # --------------------------------------------------------------- processes
@@ -171,13 +183,18 @@ def decompose(case, log="log.decomposePar"):
     (as for 16.333317 at 2 digits; aggloPimpleFoam's restoreStartTime.H),
     and then writes none of its fields and succeeds. decomposePar writes
     barycentric coordinates but copies the uniform cloudProperties that
-    announce a legacy positions file: they announce coordinates."""
+    announce a legacy positions file: they announce coordinates. The
+    marker DECOMPOSED is written last (decomposed()): a decomposition cut
+    off by a kill is done again, not taken for complete."""
+    (Path(case) / DECOMPOSED).unlink(missing_ok=True)
     run_logged(["decomposePar", "-force", "-latestTime"], case, log)
+    procs = list(Path(case).glob("processor[0-9]*"))
     for f in Path(case).glob("processor*/*/uniform/lagrangian/*/"
                              "cloudProperties"):
         text = f.read_text()
         f.write_text(re.sub(r"geometry *positions;",
                             "geometry coordinates;", text))
+    (Path(case) / DECOMPOSED).write_text(f"{len(procs)}\n")
 
 
 def run_solver(case, cmd, label, progress, every, append=False,
