@@ -12,19 +12,27 @@ work tree, --runs). Nothing is tuned: every variant run is reported.
                                             J at a time (default 1; with
                                             J > 1 each one's output goes
                                             to runs/<variant>.log)
-    channelRegime.py post [--runs DIR] [--out DIR]
-                                            results/regime: regime.json,
-                                            regime.txt, regime.png
+    channelRegime.py post [--runs DIR] [--out DIR | --reference]
+                                            regime.json, regime.txt,
+                                            regime.png in DIR/report-regime
+                                            (--reference: the committed
+                                            results/regime)
 
 --runs: the folder holding runs/<preset> (default: this tutorial's runs/);
 post takes every variant with a finished agglomeration stage there;
 of the others it reports how far they are and what their release and
-dispersion stages show so far (an interim, not the window)."""
+dispersion stages show so far (an interim, not the window). A --runs
+folder that holds no variant's runs is refused before anything is
+written; the three files are written together (each to a temporary
+file first), so a failed post leaves the earlier ones as they were."""
 
 import argparse
 import json
+import os
+import shutil
 import subprocess
 import sys
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
@@ -51,9 +59,28 @@ VARIANTS = (
 )
 
 
-def run_post(runs=None, out=None, names=None):
-    out = Path(out or HERE / "results" / "regime")
-    out.mkdir(parents=True, exist_ok=True)
+def post_folder(runs=None, out=None, reference=False):
+    """Where post writes: out, else the committed results/regime with
+    reference, else <runs>/report-regime."""
+    if out:
+        return Path(out)
+    if reference:
+        return HERE / "results" / "regime"
+    return Path(runs or HERE / "runs") / "report-regime"
+
+
+def run_post(runs=None, out=None, names=None, reference=False):
+    runs_dir = Path(runs or HERE / "runs")
+    if not runs_dir.is_dir():
+        raise SystemExit(f"channelRegime.py post: no folder {runs_dir}")
+    if not any(runs_base(runs, n).is_dir() for n in names or dict(VARIANTS)):
+        raise SystemExit(f"channelRegime.py post: no variant has run under "
+                         f"{runs_dir} (runs/<variant> of: "
+                         f"{' '.join(names or dict(VARIANTS))}); nothing "
+                         "written")
+    final = post_folder(runs, out, reference)
+    final.mkdir(parents=True, exist_ok=True)
+    out = Path(tempfile.mkdtemp(prefix=".post-", dir=final))
     res = {"variants": []}
     what = dict(VARIANTS)
     for name in names or list(what):
@@ -68,10 +95,16 @@ def run_post(runs=None, out=None, names=None):
     for check in pairs.CHECKS:
         res[check] = pairs.compare(res, MODELS, check)
     res["verdict"] = verdict.verdict(res, MODELS)
-    (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")
-    (out / "regime.txt").write_text(table(res))
-    plots(res, out)
+    try:
+        (out / "regime.json").write_text(json.dumps(res, indent=1) + "\n")
+        (out / "regime.txt").write_text(table(res))
+        plots(res, out)
+        for f in ("regime.json", "regime.txt", "regime.png"):
+            os.replace(out / f, final / f)
+    finally:
+        shutil.rmtree(out, ignore_errors=True)
     print(table(res))
+    print(f"Written: {final}")
     return res
 
 
@@ -113,7 +146,9 @@ def main(argv):
     r.add_argument("variants", nargs="*")
     q = sub.add_parser("post")
     q.add_argument("--runs")
-    q.add_argument("--out")
+    where = q.add_mutually_exclusive_group()
+    where.add_argument("--out")
+    where.add_argument("--reference", action="store_true")
     q.add_argument("variants", nargs="*")
     a = ap.parse_args(argv[1:])
     if getattr(a, "j", 1) < 1 or getattr(a, "np", 1) < 1:
@@ -131,7 +166,7 @@ def main(argv):
                      "study from a clone outside the work tree instead")
         return run_variants(a.variants or known, a.np, a.j)
     else:
-        run_post(a.runs, a.out, a.variants or None)
+        run_post(a.runs, a.out, a.variants or None, a.reference)
     return 0
 
 

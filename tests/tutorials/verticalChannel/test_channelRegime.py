@@ -300,3 +300,25 @@ def test_contacts_by_wall_distance():
     assert b["alpha"] == [0.5, 0.0, None, None, 1.0, 0.5]
     assert b["unMedian_mm_s"] == pytest.approx([15, 30, None, None, 2,
                                                 1.5])
+
+
+def test_post_refuses_a_wrong_runs_folder(tmp_path):
+    """post --runs of a folder that does not exist, or holds no variant's
+    runs, stops before writing (it exited 0 and rewrote the committed
+    regime.json with 'not run' rows, 95 KB -> 2.5 KB); without
+    --reference it writes beside the runs, not into results/regime."""
+    regime = script("channelRegime")
+    committed = regime.HERE / "results" / "regime"
+    before = {f: (committed / f).read_bytes()
+              for f in ("regime.json", "regime.txt", "regime.png")}
+    for runs in (tmp_path / "missing", tmp_path):
+        with pytest.raises(SystemExit) as e:
+            regime.main(["channelRegime.py", "post", "--runs", str(runs)])
+        assert str(runs) in str(e.value)
+    assert not (tmp_path / "report-regime").exists()
+    assert {f: (committed / f).read_bytes() for f in before} == before
+    assert regime.post_folder(tmp_path) == tmp_path / "report-regime"
+    assert regime.post_folder(tmp_path, reference=True) == committed
+    with pytest.raises(SystemExit):               # one place or the other
+        regime.main(["channelRegime.py", "post", "--reference", "--out",
+                     str(tmp_path)])
