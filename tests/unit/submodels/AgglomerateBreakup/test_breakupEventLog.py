@@ -191,3 +191,23 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     assert "is not an earlier output of -json" in res.stdout
     assert other.read_bytes().startswith(b"aggloCollisionEvents 2")
     assert len(other.read_bytes()) == 338
+
+    # Finite but absurd load values are refused by name (breakupReplay
+    # died by SIGFPE, rc 136, on eps, nu or a strain rate of 1e300)
+    for field, index, value in (("epsilon", None, 1e300),
+                                ("nu", None, 1e300), ("nu", None, 1e-300),
+                                ("S", 1, 1e300), ("S", 0, 3e296),
+                                ("dt", None, 1e300)):
+        rec = np.frombuffer(whole, np.uint8, offset=breakuplog.HEADER_BYTES)
+        recs = rec.view(breakuplog.DTYPE).copy()
+        if index is None:
+            recs[field][0] = value
+        else:
+            recs[field][0, index] = value
+        log.write_bytes(whole[:breakuplog.HEADER_BYTES] + recs.tobytes())
+        res = run([foam_bin("breakupReplay")], case,
+                  "log.breakupReplay.bounds", check=False)
+        assert res.returncode == 1, (field, res.returncode)
+        assert "record 0:" in res.stdout, res.stdout[-1500:]
+        assert ("time step" if field == "dt" else "load:") in res.stdout
+    log.write_bytes(whole)

@@ -35,6 +35,24 @@ License
 namespace
 {
     using namespace Foam::eventRecord;
+
+    // The bounds of a record's step and load (doc/eventLog.md): wide
+    // enough for any flow, narrow enough that the kernels' products
+    // (eps/nu, S:S, nu/eps, rho u^2) stay finite, so that a corrupt
+    // record is refused by name instead of a floating-point exception
+    const Foam::scalar dtMax = 1e3;         // s
+    const Foam::scalar epsilonMax = 1e12;   // m2/s3
+    const Foam::scalar nuMin = 1e-9, nuMax = 1;     // m2/s
+    // the fluid's density: the particles' bounds (eventRecord)
+    const Foam::scalar impactMax = 1e4;     // m/s
+    const Foam::scalar strainMax = 1e12;    // 1/s
+    const Foam::scalar ratioMax = 1e100;
+
+    bool within(const Foam::scalar v, const Foam::scalar lo,
+                const Foam::scalar hi)
+    {
+        return std::isfinite(v) && v >= lo && v <= hi;
+    }
 }
 
 
@@ -133,10 +151,11 @@ std::string Foam::breakupEvent::invalid
 ) const
 {
     std::ostringstream os;
-    const bool finiteS =
-        std::isfinite(S.xx()) && std::isfinite(S.xy())
-     && std::isfinite(S.xz()) && std::isfinite(S.yy())
-     && std::isfinite(S.yz()) && std::isfinite(S.zz());
+    bool boundedS = true;
+    for (direction c = 0; c < symmTensor::nComponents; ++c)
+    {
+        boundedS = boundedS && within(S[c], -strainMax, strainMax);
+    }
     if (timeIndex < 0)
     {
         os << "time index " << timeIndex << " (valid: >= 0)";
@@ -155,27 +174,32 @@ std::string Foam::breakupEvent::invalid
         os << "fragments: nPrimary " << a.nPrimary << " + " << b.nPrimary
            << " (valid: the parent's " << parent.nPrimary << ")";
     }
-    else if (!(std::isfinite(dt) && dt > 0))
+    else if (!(within(dt, 0, dtMax) && dt > 0))
     {
-        os << "time step " << dt << " (valid: finite, > 0)";
+        os << "time step " << dt << " (valid: > 0, <= " << dtMax << " s)";
     }
     else if
     (
-        !(std::isfinite(load.epsilon) && load.epsilon >= 0)
-     || !(std::isfinite(load.nu) && load.nu > 0)
-     || !(std::isfinite(load.rhoF) && load.rhoF > 0)
+        !within(load.epsilon, 0, epsilonMax)
+     || !within(load.nu, nuMin, nuMax)
+     || !within(load.rhoF, rhoMin, rhoMax)
      || !bounded(load.dragForce, 1)
-     || !(std::isfinite(load.wallImpactSpeed) && load.wallImpactSpeed >= 0)
-     || !finiteS
-     || !std::isfinite(ratio)
+     || !within(load.wallImpactSpeed, 0, impactMax)
+     || !boundedS
+     || !within(ratio, -ratioMax, ratioMax)
     )
     {
         os << "load: epsilon " << load.epsilon << ", nu " << load.nu
            << ", rho " << load.rhoF << ", drag force "
            << text(load.dragForce) << ", wall impact speed "
-           << load.wallImpactSpeed << ", ratio " << ratio
-           << " (valid: finite; epsilon, wall impact speed >= 0, nu, rho"
-           << " > 0, each component of the drag force within +-1 N)";
+           << load.wallImpactSpeed << ", strain rate (" << S.xx() << " "
+           << S.xy() << " " << S.xz() << " " << S.yy() << " " << S.yz()
+           << " " << S.zz() << "), ratio " << ratio << " (valid: epsilon 0-" << epsilonMax
+           << " m2/s3, nu " << nuMin << "-" << nuMax << " m2/s, rho "
+           << rhoMin << "-" << rhoMax << " kg/m3, each component of the"
+           << " drag force within +-1 N, wall impact speed 0-" << impactMax
+           << " m/s, each component of the strain rate within +-"
+           << strainMax << " 1/s, ratio within +-" << ratioMax << ")";
     }
     for (const hardSphereState* p : {&parent, &a, &b})
     {
