@@ -61,6 +61,9 @@ Description
     multiplies that cloud's momentum source: a reduced cloud of N/s
     particles then loads the fluid like the N of the full case.
 
+    One solver at a time in a case: a second aggloPimpleFoam started in a
+    case where one runs stops with a fatal error naming it (caseLock.H).
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -70,6 +73,7 @@ Description
 #include "fvOptions.H"
 #include "basicAgglomeratingCloud.H"
 #include "timeNamePrecision.H"
+#include "caseLock.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -95,6 +99,10 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+
+    // One solver at a time in a case (caseLock.H)
+    caseLock lock(runTime);
+
     #include "restoreStartTime.H"
     #include "createMesh.H"
     #include "createControl.H"
