@@ -97,3 +97,20 @@ def test_first_write_without_the_fluid_is_cut_off(tmp_path):
     assert times.incomplete_time(tmp_path) is None
     moved = times.set_aside_incomplete_times(tmp_path)
     assert moved == []
+
+
+def test_cut_off_compressed_write(tmp_path):
+    """writeCompression on: a gzip stream cut off by a kill is an
+    incomplete write (compressed files were not checked)."""
+    import gzip
+    _write(tmp_path, "0", ["EAM"], 3)
+    _write(tmp_path, "0.002", ["EAM"], 3)
+    _write(tmp_path, "0.004", ["EAM"], 3)
+    for t in ("0.002", "0.004"):
+        u = tmp_path / t / "U"
+        (tmp_path / t / "U.gz").write_bytes(gzip.compress(u.read_bytes()))
+        u.unlink()
+    assert times.incomplete_time(tmp_path) is None
+    gz = tmp_path / "0.004" / "U.gz"
+    gz.write_bytes(gz.read_bytes()[:-12])
+    assert times.incomplete_time(tmp_path) == tmp_path / "0.004"

@@ -190,3 +190,43 @@ def test_shear_preset_values_checked(tmp_path, foam_env, entry, value,
     assert "Traceback" not in res.stderr, res.stderr
     assert f"presets/ci: {entry}" in res.stderr and words in res.stderr, \
         res.stderr
+
+
+def test_presets_entry_given_twice(tmp_path, foam_env):
+    """An entry given twice in one preset is refused (the later value
+    replaced the earlier one silently), naming the entry and the file."""
+    case = _edited(tmp_path, "verticalChannel", "smoke\n{", "nParticles",
+                   "2000;\n    nParticles 3000")
+    res = subprocess.run([sys.executable, "channel.py", "settings", "smoke",
+                          "C1", "unladen"], cwd=case, capture_output=True,
+                         text=True)
+    assert res.returncode == 1 and "Traceback" not in res.stderr
+    assert "entry 'nParticles' given twice" in res.stderr
+    assert "presets" in res.stderr
+
+
+def test_channel_replay_refusals(foam_env):
+    """channelReplay.py: an unknown preset exits 1 naming the valid ones
+    (it exited 0 with 'no collision event logs under runs/bogus'); -h
+    prints its options and exits 0."""
+    tut = ROOT / "tutorials" / "verticalChannel"
+    res = subprocess.run([sys.executable, "channelReplay.py", "bogus"],
+                         cwd=tut, capture_output=True, text=True)
+    assert res.returncode == 1 and "unknown preset 'bogus'" in res.stderr
+    assert "smoke" in res.stderr
+    res = subprocess.run([sys.executable, "channelReplay.py", "-h"],
+                         cwd=tut, capture_output=True, text=True)
+    assert res.returncode == 0 and "--reference" in res.stdout
+
+
+def test_channel_empty_configs_refused(tmp_path, foam_env):
+    """-configs "" ran the unladen stage and reported nothing: it is
+    refused before anything runs."""
+    tut = tmp_path / "verticalChannel"
+    shutil.copytree(ROOT / "tutorials" / "verticalChannel", tut,
+                    ignore=shutil.ignore_patterns("runs", "results"))
+    res = subprocess.run(["./Allrun", "-preset", "smoke", "-configs", ""],
+                         cwd=tut, capture_output=True, text=True, timeout=60)
+    assert res.returncode == 1
+    assert "-configs names no configuration" in res.stderr
+    assert not (tut / "runs").exists()

@@ -16,6 +16,7 @@ partner as it did in the run, only the outcome is computed anew; what a
 changed outcome would do to later collisions, to the agglomerates and
 (two-way coupled) to the flow is not included."""
 
+import argparse
 import json
 import sys
 from pathlib import Path
@@ -63,11 +64,24 @@ def replay(pname, runs_dir=None, reference=False):
     return summary
 
 
+def main(argv):
+    ap = argparse.ArgumentParser(
+        prog="channelReplay.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("preset", help="the preset whose runs are replayed")
+    ap.add_argument("runs", nargs="?", help="the folder holding the "
+                    "preset's runs (default: runs/PRESET)")
+    ap.add_argument("--reference", action="store_true",
+                    help="write into the committed results/PRESET")
+    a = ap.parse_args(argv)
+    try:
+        channel.preset(a.preset)
+    except SystemExit as e:
+        sys.stderr.write(f"{e}\n")
+        return 1
+    replay(a.preset, a.runs, a.reference)
+    return 0
+
+
 if __name__ == "__main__":
-    args = sys.argv[1:]
-    ref = "--reference" in args
-    args = [a for a in args if a != "--reference"]
-    if len(args) not in (1, 2):
-        sys.exit(__doc__)
-    replay(*args, reference=ref)
-    sys.exit(0)
+    sys.exit(main(sys.argv[1:]))

@@ -226,6 +226,10 @@ def run_stages(run, configs):
 
 def work(a):
     configs = a.configs.split()
+    if not configs:
+        sys.stderr.write("Allrun: -configs names no configuration (see "
+                         "./Allrun -help)\n")
+        return 1
     # The preset and the configurations checked before anything starts
     try:
         for c in configs:

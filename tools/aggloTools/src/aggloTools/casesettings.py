@@ -25,7 +25,10 @@ def read_presets(path, preset_keys, sections=None, groups=None):
     preset) against preset_keys."""
     sections = sections or {}
     groups = groups or {}
-    d = read_dict(path)
+    try:
+        d = read_dict(path)
+    except ValueError as e:
+        raise SystemExit(str(e)) from None
     for name, p in d.items():
         if name in groups:
             for entry, e in p.items():
@@ -67,7 +70,10 @@ def choice(value, valid, where):
 def read_settings(case, keys):
     """The system/caseSettings of a run, every entry checked."""
     f = Path(case) / "system" / "caseSettings"
-    s = read_dict(f)
+    try:
+        s = read_dict(f)
+    except ValueError as e:
+        raise SystemExit(str(e)) from None
     check_keys(s, keys, str(f))
     return s
 

@@ -39,7 +39,8 @@ def _value(tok):
 def parse_dict(text):
     """Parse a dictionary of `key value;` entries and `name { ... }`
     sub-dictionaries (no lists, macros or directives) into a dict; a
-    missing ';', '{' or '}' is a ValueError."""
+    missing ';', '{' or '}', or an entry given twice in one dictionary,
+    is a ValueError."""
     tokens = re.findall(r'"[^"]*"|[{};]|[^\s{};]+', strip_comments(text))
     pos = 0
 
@@ -55,6 +56,11 @@ def parse_dict(text):
                                      "its '{'")
                 return out
             key = tok.strip('"')
+            if key in out:
+                # OpenFOAM lets the later entry replace the earlier one;
+                # in the files these tools read a repeated entry is a
+                # slip whose first value would be lost silently
+                raise ValueError(f"entry '{key}' given twice")
             if pos < len(tokens) and tokens[pos] == "{":
                 pos += 1
                 out[key] = block(True)

@@ -1,7 +1,9 @@
 """Time folders of a case: listed in time order, and a last write that
 was cut off (kill -9, a full disk) set aside before a restart."""
 
+import gzip
 import shutil
+import zlib
 from pathlib import Path
 
 
@@ -18,13 +20,19 @@ def time_dirs(case):
 
 def _complete_file(path):
     """True if an OpenFOAM file ends with its end divider (a write that
-    was killed leaves it truncated); compressed files are not checked."""
+    was killed leaves it truncated); a compressed file (writeCompression
+    on) is read whole: a cut-off gzip stream is incomplete too."""
     if path.suffix == ".gz":
-        return True
-    with open(path, "rb") as f:
-        f.seek(0, 2)
-        f.seek(max(0, f.tell() - 200))
-        tail = f.read().rstrip()
+        try:
+            with gzip.open(path, "rb") as f:
+                tail = f.read()[-200:].rstrip()
+        except (EOFError, OSError, zlib.error):
+            return False
+    else:
+        with open(path, "rb") as f:
+            f.seek(0, 2)
+            f.seek(max(0, f.tell() - 200))
+            tail = f.read().rstrip()
     return tail.endswith(b"//") and b"// ****" in tail
 
 
