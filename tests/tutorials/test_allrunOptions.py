@@ -20,6 +20,7 @@ CASES = [
     ("verticalChannel", ["-np", "0"], "not a positive number"),
     ("verticalChannel", ["-np", "-2"], "-np needs a value"),
     ("verticalChannel", ["-np", "abc"], "not a positive number"),
+    ("verticalChannel", ["-np", "1000"], "-np 1000 is more than the"),
     ("shearFlowValidation", ["-preset"], "-preset needs a value"),
     ("shearFlowValidation", ["-j", "0"], "not a positive number"),
     ("shearFlowValidation", ["-every", "x"], "not a positive number"),
@@ -90,3 +91,24 @@ def test_second_driver_on_a_run_folder_refused(tmp_path, foam_env,
     assert "is in use by another run" in res.stderr
     assert f"process {holder.pid} runs" in res.stderr
     assert sorted(p.name for p in base.iterdir()) == [".aggloRun.lock"]
+
+
+@pytest.mark.parametrize("script", ["Allrun",
+                                    "tutorials/verticalChannel/Allrun",
+                                    "tutorials/shearFlowValidation/Allrun",
+                                    "tutorials/breakupShear/Allrun"])
+def test_started_by_bash_or_through_a_link(tmp_path, foam_env, script):
+    """`bash Allrun` and a link to an Allrun start in the script's own
+    folder (they failed: 'cd: Allrun: Not a directory', or ran in the
+    link's folder)."""
+    target = project_dir() / script
+    res = subprocess.run(["bash", target.name, "-help"], cwd=target.parent,
+                         capture_output=True, text=True, timeout=60)
+    assert res.returncode == 0, res.stderr
+    assert "-preset" in res.stdout
+    link = tmp_path / "Allrun"
+    link.symlink_to(target)
+    res = subprocess.run([str(link), "-help"], cwd=tmp_path,
+                         capture_output=True, text=True, timeout=60)
+    assert res.returncode == 0, res.stderr
+    assert "-preset" in res.stdout

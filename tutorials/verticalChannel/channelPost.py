@@ -160,10 +160,11 @@ def post(pname, reference=False):
     p = channel.preset(pname)
     runs = run_dirs(pname)
     out = channel.report_dir(pname, reference)
-    out.mkdir(parents=True, exist_ok=True)
     if not runs:
-        print(f"channelPost.py: no finished runs under runs/{pname}")
+        print(f"channelPost.py: no finished runs under runs/{pname}: "
+              "nothing written")
         return 1
+    out.mkdir(parents=True, exist_ok=True)
     fluid = {}
     ut, G = u_tau(p, HERE / "runs" / pname / "unladen")
     if ut:

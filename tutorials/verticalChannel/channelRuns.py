@@ -40,6 +40,7 @@ Run times on the 2-core development machine: README.md.
 
 import contextlib
 import io
+import os
 import shutil
 import subprocess
 import sys
@@ -66,6 +67,10 @@ def options(argv):
     p.add_argument("-every", type=stages.positive("-every"), default=60)
     p.add_argument("-reference", action="store_true")
     a = p.parse_args(argv)
+    cores = len(os.sched_getaffinity(0))
+    if a.np > cores:
+        p.error(f"-np {a.np} is more than the {cores} cores this run may "
+                "use (Open MPI refuses to start more ranks than cores)")
     if a.matrix:
         a.configs = MATRIX
     return a
@@ -256,6 +261,9 @@ def work(a):
     report = f"results/{a.preset}" if a.reference \
         else f"runs/{a.preset}/report"
     print()
+    if not (HERE / report / "regression.txt").is_file():
+        sys.stderr.write(f"Allrun: no report written ({HERE / report})\n")
+        return 1
     print(f"Report: {HERE / report} (regression.txt, summary.json, *.png;"
           f" comparison.txt: against the committed results/{a.preset})")
     return status

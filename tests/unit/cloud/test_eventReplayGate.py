@@ -133,9 +133,13 @@ def test_outputs_are_never_lost_or_misplaced(case_dir, foam_env):
     ("agglomerates", 0, 7, "B", "agglomerates 7"),
     ("nPrimary1", 0, -5, "<i", "nPrimary -5"),
     ("timeIndex", 0, -3, "<i", "time index -3"),
+    ("wallDistance", 0, float("nan"), "<f", "wall distance nan"),
+    ("proc1", 0, -5, "<i", "origProc -5"),
+    ("id2", 0, -1, "<i", "origId -1"),
 ], ids=["nanDiameter", "hugeDiameter", "tinyDensity", "hugeVelocity",
         "infiniteSpin", "farPosition", "category", "branch",
-        "agglomerates", "nPrimary", "timeIndex"])
+        "agglomerates", "nPrimary", "timeIndex", "nanWallDistance",
+        "origProc", "origId"])
 def test_corrupt_record_is_fatal(case_dir, foam_env, field, index, value,
                                  fmt, words):
     """A record that cannot be a logged collision stops the replay with a

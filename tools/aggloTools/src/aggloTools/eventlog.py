@@ -43,6 +43,8 @@ GHOST = 255
 D_RANGE = (1e-9, 1.0)            # m
 RHO_RANGE = (1e-3, 1e6)          # kg/m3
 X_MAX, U_MAX, OMEGA_MAX = 1e6, 1e4, 1e12   # per component
+#: The origProc of the parcels break-up makes (fragmentIds::origProc)
+FRAGMENT_PROC = -2
 
 
 def invalid_record(r, nb):
@@ -63,6 +65,13 @@ def invalid_record(r, nb):
         return f"collision type {r['type']} (valid: 0 sticking, 1 sliding)"
     if not np.isfinite(r["time"]):
         return f"contact time {r['time']} (valid: finite)"
+    if not (np.isfinite(r["wallDistance"]) and r["wallDistance"] >= 0):
+        return f"wall distance {r['wallDistance']:g} (valid: finite, >= 0)"
+    for k in (1, 2):
+        proc, pid = r[f"proc{k}"], r[f"id{k}"]
+        if (proc < 0 and proc != FRAGMENT_PROC) or pid < 0:
+            return (f"partner {k}: origProc {proc}, origId {pid} (valid: "
+                    "origProc a rank >= 0 or -2 (a fragment), origId >= 0)")
     for k in (1, 2):
         d, rho = r[f"d{k}"], r[f"rho{k}"]
         if not D_RANGE[0] <= d <= D_RANGE[1]:
@@ -93,8 +102,12 @@ def check_records(records, path, nb):
         bad = ((r["timeIndex"] < 0) | (r["category"] > 2)
                | ((r["branch"] != GHOST) & (r["branch"] >= nb))
                | (r["agglomerates"] > 1) | (r["type"] > 1)
-               | ~np.isfinite(r["time"]))
+               | ~np.isfinite(r["time"])
+               | ~(np.isfinite(r["wallDistance"])
+                   & (r["wallDistance"] >= 0)))
         for k in (1, 2):
+            proc = r[f"proc{k}"]
+            bad |= ((proc < 0) & (proc != FRAGMENT_PROC)) | (r[f"id{k}"] < 0)
             d, rho = r[f"d{k}"], r[f"rho{k}"]
             bad |= ~((d >= D_RANGE[0]) & (d <= D_RANGE[1]))
             bad |= ~((rho >= RHO_RANGE[0]) & (rho <= RHO_RANGE[1]))

@@ -169,6 +169,24 @@ std::string Foam::collisionEvent::invalid
     {
         os << "contact time " << e.time << " (valid: finite)";
     }
+    else if
+    (
+        !(std::isfinite(e.wallDistance) && e.wallDistance >= 0)
+    )
+    {
+        os << "wall distance " << e.wallDistance << " (valid: finite,"
+           << " >= 0)";
+    }
+    for (label k = 0; k < 2 && os.str().empty(); ++k)
+    {
+        // A rank's number, or the fragments' (fragmentIds::origProc, -2)
+        if ((e.proc[k] < 0 && e.proc[k] != -2) || e.id[k] < 0)
+        {
+            os << "partner " << k + 1 << ": origProc " << e.proc[k]
+               << ", origId " << e.id[k] << " (valid: origProc a rank >= 0"
+               << " or -2 (a fragment), origId >= 0)";
+        }
+    }
     for (const Foam::hardSphereState* p : {&e.p1, &e.p2})
     {
         if (!os.str().empty())
