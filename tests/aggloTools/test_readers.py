@@ -172,3 +172,19 @@ def test_binary_positions_cut_off(tmp_path):
     with pytest.raises(ValueError, match="cut off") as e:
         cloud.read_positions(f)
     assert str(f) in str(e.value)
+
+
+@pytest.mark.parametrize("body, words", [
+    ("# k count\n1 20\n2", "line 3: 1 values for 2 columns"),
+    ("# k count\n1 20\n2 1e", "line 3: 2 values for 2 columns"),
+    ("1 20\n", "line 1: a row before the header"),
+    ("", "no header"),
+])
+def test_table_with_a_cut_off_row(tmp_path, body, words):
+    """A cut agglomerateSizes.dat is refused naming the file and the line
+    (numpy's shape error named neither)."""
+    f = tmp_path / "agglomerateSizes.dat"
+    f.write_text(body)
+    with pytest.raises(ValueError, match=words) as e:
+        stats.read_table(f)
+    assert str(f) in str(e.value)

@@ -4,7 +4,7 @@ variants of the break-up coefficients with the breakupReplay utility.
 
     ev = read_breakup_events(case)              # structured array
     res = replay_breakups(case, {"weaker": {"strength":
-                                            {"rumpfPrefactor": 0.5}}})
+                                            {"rumpfPrefactor": 1.0}}})
 """
 
 from pathlib import Path

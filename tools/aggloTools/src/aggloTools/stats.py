@@ -66,12 +66,27 @@ def last_output(case, cloud, name):
 
 def read_table(path):
     """The columns of agglomerateSizes.dat or profiles.dat (header line
-    '# k ...' or '# x ...') as a dict of numpy arrays."""
+    '# k ...' or '# x ...') as a dict of numpy arrays; a file without
+    its header or with a row cut off (a kill during the write) is a
+    ValueError naming the file and the line."""
     cols, rows = None, []
-    for line in Path(path).read_text().splitlines():
+    for n, line in enumerate(Path(path).read_text().splitlines(), 1):
         if line.startswith(("# x ", "# k ")):
             cols = line[2:].split()
         elif line and not line.startswith("#"):
-            rows.append([float(c) for c in line.split()])
+            if cols is None:
+                raise ValueError(f"{path}, line {n}: a row before the "
+                                 "header ('# k ...' or '# x ...')")
+            try:
+                row = [float(c) for c in line.split()]
+            except ValueError:
+                row = []
+            if len(row) != len(cols):
+                raise ValueError(f"{path}, line {n}: {len(line.split())} "
+                                 f"values for {len(cols)} columns (a row "
+                                 "cut off?)")
+            rows.append(row)
+    if cols is None:
+        raise ValueError(f"{path}: no header ('# k ...' or '# x ...')")
     a = np.array(rows) if rows else np.zeros((0, len(cols)))
     return {c: a[:, i] for i, c in enumerate(cols)}
