@@ -61,7 +61,7 @@ PI = math.pi
 
 COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
                "ddtScheme", "seed", "writeFormat", "writePositions",
-               "purgeWrite", "eventLog"}
+               "purgeWrite", "eventLog", "UTolerance"}
 PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "unladen", "release", "dispersion", "agglomeration", "window",
                "writeStar", "profileBins", "seededPairs"} | COMMON_KEYS
@@ -80,7 +80,8 @@ PRESET_NUMBERS = {
     "delta": N(float, 0, open_lo=True), "Ubar": N(float, 0, open_lo=True),
     "nu": N(float, 0, open_lo=True), "rhoInf": N(float, 0, open_lo=True),
     "rhoParticle": N(float, 0, open_lo=True), "perturb": N(float, 0),
-    "seed": N(int, 0), "purgeWrite": N(int, 0)}
+    "seed": N(int, 0), "purgeWrite": N(int, 0),
+    "UTolerance": N(float, 0, 1e-3, open_lo=True)}
 CONFIGURATION_NUMBERS = {"d": N(float, 0, open_lo=True),
                          "en": N(float, 0, 1)}
 
@@ -218,6 +219,7 @@ writeFormat     {p['writeFormat']};
 purgeWrite      {p['purgeWrite']};      // keep the last N writes (0: all)
 writePositions  {positions};  // legacy positions too
 ddtScheme       {p['ddtScheme']};
+UTolerance      {p['UTolerance']:g};   // the velocity solver's (fvSolution)
 
 // Flow (Re_b = 11900)
 Ubar            {p['Ubar']};
@@ -253,7 +255,8 @@ eventLog        {p['eventLog'] if stage == 'agglomeration' else 'off'};
 SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
                  "ny", "nz", "yGrading", "yGradingInv", "deltaT", "endTime",
                  "writeSteps", "writeFormat", "purgeWrite",
-                 "writePositions", "ddtScheme", "Ubar", "nProcs",
+                 "writePositions", "ddtScheme", "UTolerance", "Ubar",
+                 "nProcs",
                  "dParticle", "nParticles", "seed", "subModels", "coupled",
                  "couplingScale", "cloudForces", "dispersionModel",
                  "enParticle", "wallType", "wallCoeffs", "profileBins",

@@ -38,7 +38,8 @@ def _value(tok):
 
 def parse_dict(text):
     """Parse a dictionary of `key value;` entries and `name { ... }`
-    sub-dictionaries (no lists, macros or directives) into a dict; a
+    sub-dictionaries (no lists; macros `$x` kept as text; a directive
+    such as `#include "file"` skipped) into a dict; a
     missing ';', '{' or '}', or an entry given twice in one dictionary,
     is a ValueError."""
     tokens = re.findall(r'"[^"]*"|[{};]|[^\s{};]+', strip_comments(text))
@@ -55,6 +56,9 @@ def parse_dict(text):
                     raise ValueError("unbalanced braces: a '}' without "
                                      "its '{'")
                 return out
+            if tok.startswith("#"):
+                pos += 1                # a directive and its argument
+                continue
             key = tok.strip('"')
             if key in out:
                 # OpenFOAM lets the later entry replace the earlier one;

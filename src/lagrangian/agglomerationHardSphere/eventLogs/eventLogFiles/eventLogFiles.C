@@ -89,6 +89,7 @@ Foam::eventLogFiles<Event>::eventLogFiles
 {
     const label start = mesh.time().timeIndex();
     label removed = 0;
+    label nFound = 0;           // the events files there before this run
     if (Pstream::master())
     {
         mkDir(dir_);
@@ -96,6 +97,7 @@ Foam::eventLogFiles<Event>::eventLogFiles
         {
             if (f.hasExt("bin") && f.startsWith("events"))
             {
+                ++nFound;
                 removed += eventFile<Event>::truncateAfter(dir_/f, start);
             }
         }
@@ -103,6 +105,7 @@ Foam::eventLogFiles<Event>::eventLogFiles
     // Every rank appends only after the master has cut the files back;
     // its file exists from the start (an empty log is a log)
     reduce(removed, sumOp<label>());
+    reduce(nFound, sumOp<label>());
     mkDir(dir_);
     eventFile<Event>::append(file_, List<Event>(), names_);
     nInFile_ = eventFile<Event>::size(file_);
@@ -142,6 +145,17 @@ Foam::eventLogFiles<Event>::eventLogFiles
     if (readable)
     {
         const label nRecorded = IOdictionary(io).get<label>("nEvents");
+        if (nRecorded && !nFound)
+        {
+            FatalErrorInFunction
+                << "The " << what().c_str() << " " << dir_ << " has no"
+                << " events file, but " << nRecorded << " events were"
+                << " logged when time " << mesh.time().timeName() << " was"
+                << " written (" << io.objectPath() << "): the log was"
+                << " deleted or moved. Put it back, start from a time"
+                << " before its first event, or switch eventLog off"
+                << exit(FatalError);
+        }
         if (nHeld != nRecorded)
         {
             FatalErrorInFunction
@@ -184,6 +198,46 @@ Foam::fileName Foam::eventLogFiles<Event>::folder
 )
 {
     return runTime.globalPath()/"postProcessing"/(cloudName + suffix);
+}
+
+
+template<class Event>
+void Foam::eventLogFiles<Event>::refuseLaterEvents
+(
+    const fvMesh& mesh,
+    const word& cloudName,
+    const word& suffix
+)
+{
+    const fileName dir(folder(mesh.time(), cloudName, suffix));
+    const label start = mesh.time().timeIndex();
+    label later = 0;
+    if (Pstream::master() && isDir(dir))
+    {
+        for (const fileName& f : readDir(dir, fileName::FILE))
+        {
+            if (f.hasExt("bin") && f.startsWith("events"))
+            {
+                wordList names;
+                for (const Event& e : eventFile<Event>::read(dir/f, names))
+                {
+                    later += (e.timeIndex > start);
+                }
+            }
+        }
+    }
+    reduce(later, sumOp<label>());
+    if (later)
+    {
+        FatalErrorInFunction
+            << "The " << what().c_str() << " " << dir << " holds " << later
+            << " events after time " << mesh.time().timeName() << " (time"
+            << " index " << start << "), logged by an earlier run. With"
+            << " eventLog off this run would leave them in the log beside"
+            << " a history that no longer has them: switch eventLog on"
+            << " (the log is then cut back to this time) or remove " << dir
+            << exit(FatalError);
+    }
 }
 
 

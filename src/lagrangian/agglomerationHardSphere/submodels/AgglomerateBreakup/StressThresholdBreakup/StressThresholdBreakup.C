@@ -177,6 +177,13 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
             )
         );
     }
+    else
+    {
+        eventLogFiles<breakupEvent>::refuseLaterEvents
+        (
+            owner.mesh(), owner.name(), "BreakupEvents"
+        );
+    }
 }
 
 

@@ -233,6 +233,13 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
         );
         observers_.append(log_.get());
     }
+    else
+    {
+        eventLogFiles<collisionEvent>::refuseLaterEvents
+        (
+            owner.mesh(), owner.name(), "CollisionEvents"
+        );
+    }
 
     Info<< "    pairSearch " << search_->type() << ", ";
     resolver_->write(Info);
