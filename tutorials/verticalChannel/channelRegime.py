@@ -56,6 +56,8 @@ VARIANTS = (
     ("regime64", "grid 64^3 at the paper's phases"),
     ("regime32n3", "3e5 particles at 32^3 and the paper's phases"),
     ("regime48n3", "3e5 particles at 48^3 and the paper's phases"),
+    ("printed", "regime64 at the wall-normal grid the paper prints "
+                "(64 x 128 x 64, y+ 0.63, dt* 0.005)"),
 )
 
 

@@ -1,5 +1,5 @@
 """verticalChannel regime study: the variants one shortcut apart,
-compared. Two checks (CHECKS), each over pairs (variant, base) that
+compared. Three checks (CHECKS), each over pairs (variant, base) that
 differ in that shortcut alone:
 
 * the particle number: each 3 x 10^5 variant (s = 20) over its 10^5 base
@@ -11,7 +11,11 @@ differ in that shortcut alone:
 * the phase lengths: each variant at the paper's phases (240/100/520/200
   T*, window 100-200) over its base at `small`'s (60/10/30/60, window
   30-60), the same grid and particles. Ratio 1: `small`'s shorter
-  release, dispersion and window give the paper's phases' result.
+  release, dispersion and window give the paper's phases' result;
+* the wall-normal resolution: `printed` (the paper's printed grid, 128
+  cells across with the first cell centre at y+ 0.63, Delta t* 0.005)
+  over `regime64` (64 cells, first cell centre at y+ 1), the same x and
+  z cells, phases and particles.
 
 Per model and quantity (f_col x s^2, f_agg x s^2, alpha_f): the ratio
 variant / base, its standard error from both runs' sigmas (relative
@@ -41,6 +45,14 @@ CHECKS = {
                 "phases do not matter where the ratio is 1 within {z:g} "
                 "sigma):",
         "differs": "depends on the phases"},
+    "wallNormal": {
+        "pairs": (("printed", "regime64"),),
+        "head": "Wall-normal resolution (the printed 128 cells, first "
+                "cell centre at y+ 0.63, over regime64's 64, the same x "
+                "and z cells, phases and particles; the wall-normal grid "
+                "does not matter where the ratio is 1 within {z:g} "
+                "sigma):",
+        "differs": "depends on the wall-normal grid"},
 }
 #: The quantities compared, each with its sigma (key or function)
 NAMES = {"f_col_scaled": "f_col x s^2", "f_agg_scaled": "f_agg x s^2",

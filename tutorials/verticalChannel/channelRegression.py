@@ -203,19 +203,30 @@ RESOLVES = {
               " counts' noise); whether it is in the paper's regime is the"
               " regime study's question",
     "paper": "everything (the paper's size)",
+    "regime64": "the paper's regime nearly: C1 f_col x s^2 0.61-0.62 of"
+                " Table 3, alpha_f 1.5-2.1 times (results/regime), the"
+                " collisions at the walls; the preset for comparisons with"
+                " the paper",
 }
+
+#: The preset for comparisons with the paper (README.md, "Presets")
+PAPER_REGIME = "regime64"
 
 
 def report_head(p):
-    """The report's first lines: what the preset resolves, and where the
-    regime study's results are."""
+    """The report's first lines: what the preset resolves, and the
+    preset for comparisons with the paper, its results and the command
+    (with its hours) that runs one configuration of it."""
     what = RESOLVES.get(p["name"], "see the regime study (one shortcut of"
                         " small changed)")
     return [f"What preset {p['name']} resolves: {what}.",
-            "Which preset reaches the paper's regime: the regime study,"
-            " results/regime/regime.txt (README.md, 'The regime study');"
-            " its runs: ../../.venv/bin/python channelRegime.py run -np 2,"
-            " then post.", ""]
+            f"For comparisons with the paper: preset {PAPER_REGIME} (the"
+            " regime study's closest variant, results/regime/regime.txt;"
+            f" its Table D.6 matrix: results/{PAPER_REGIME}/); one"
+            f" configuration: ./Allrun -preset {PAPER_REGIME} -configs C2"
+            " -np 1 (C1 took 14 CPU hours, a two-way configuration takes"
+            " about 17 by estimate, on one core of the development"
+            " machine).", ""]
 
 
 def write_regression(path, p, rows, fluid):

@@ -74,6 +74,7 @@ Description
 #include "basicAgglomeratingCloud.H"
 #include "timeNamePrecision.H"
 #include "caseLock.H"
+#include "purgeWriteQueue.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -104,6 +105,9 @@ int main(int argc, char *argv[])
     caseLock lock(runTime);
 
     #include "restoreStartTime.H"
+
+    // purgeWrite removes the writes made before a restart too
+    purgeWriteQueue::restore(runTime);
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"

@@ -83,6 +83,7 @@ using namespace Foam;
 
 #include "replayOutput.H"
 #include "replayLogCount.H"
+#include "replayVariants.H"
 
 namespace
 {
@@ -277,14 +278,10 @@ int main(int argc, char *argv[])
     results.append(replay("run", runCoeffs, collision, events));
     if (args.found("variants"))
     {
-        const fileName vFile(args.get<fileName>("variants").expand());
-        IFstream is(vFile);
-        if (!is.good())
-        {
-            FatalErrorInFunction
-                << "Cannot read -variants " << vFile << exit(FatalError);
-        }
-        const dictionary variants(is);
+        const dictionary variants
+        (
+            readVariants(args.get<fileName>("variants").expand())
+        );
         wordList valid(breakupKernel::keys());
         valid.append("eventLog");
         for (const entry& v : variants)
@@ -299,6 +296,7 @@ int main(int argc, char *argv[])
             hardSphereInput::checkKeys(v.dict(), valid);
             dictionary coeffs(runCoeffs);
             coeffs.merge(v.dict());
+            nameAfterVariant(coeffs, variants.name()/v.keyword());
             results.append(replay(v.keyword(), coeffs, collision, events));
         }
     }

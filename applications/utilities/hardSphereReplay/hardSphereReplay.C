@@ -96,6 +96,7 @@ using namespace Foam;
 #include "replayConfiguration.H"
 #include "replayOutput.H"
 #include "replayLogCount.H"
+#include "replayVariants.H"
 #include "writeEvents.H"
 #include "writeReplay.H"
 
@@ -270,20 +271,7 @@ int main(int argc, char *argv[])
         if (args.found("variants"))
         {
             const fileName f(args.get<fileName>("variants"));
-            IFstream is(f);
-            if (!is.good())
-            {
-                FatalErrorInFunction
-                    << "Cannot read the variants dictionary " << f
-                    << exit(FatalError);
-            }
-            // A name given twice is an error, not a silent merge
-            const entry::inputMode mode = entry::globalInputMode;
-            entry::globalInputMode = entry::inputMode::ERROR;
-            dictionary variants;
-            variants.name() = is.name();
-            variants.read(is);
-            entry::globalInputMode = mode;
+            const dictionary variants(readVariants(f));
             const word runModel
             (
                 runKernel.getOrDefault<word>("agglomerationModel", "none")
@@ -299,6 +287,7 @@ int main(int argc, char *argv[])
                 }
                 dictionary kd(runKernel);
                 kd.merge(v.dict());
+                nameAfterVariant(kd, f/v.keyword());
 
                 // Another model: the run model's coefficients do not apply
                 // (unknown entries of the other model)

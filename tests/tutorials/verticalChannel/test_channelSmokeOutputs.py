@@ -83,8 +83,9 @@ def test_regime_study_post(smoke_runs, tmp_path):
 
 
 def test_report_head_factors_and_comparison(smoke_runs):
-    """The report says first what its preset resolves and where the
-    regime study is; every row with a published value carries sim/paper;
+    """The report says first what its preset resolves and which preset
+    to compare with the paper, with the command that runs it; every row
+    with a published value carries sim/paper;
     the comparison with another report weighs each value against both
     sigmas: the serial and 2-rank C1 runs (no random numbers) agree
     exactly (z = 0), and nothing differs beyond 3 sigma."""
@@ -92,7 +93,8 @@ def test_report_head_factors_and_comparison(smoke_runs):
     rep = {n: smoke_runs[n] / "runs" / "smoke" / "report" for n in (1, 2)}
     lines = (rep[2] / "regression.txt").read_text().splitlines()
     assert lines[0].startswith("What preset smoke resolves: nothing of")
-    assert "results/regime" in lines[1] and "channelRegime.py" in lines[1]
+    assert "preset regime64" in lines[1] and "results/regime" in lines[1]
+    assert "./Allrun -preset regime64 -configs C2" in lines[1]
     rows = json.loads((rep[2] / "summary.json").read_text())["regression"]
     with_paper = [r for r in rows if r["sim"] is not None and r["paper"]]
     assert len(with_paper) >= 12

@@ -292,3 +292,22 @@ def test_log_count_and_foreign_targets(case_dir, foam_env):
     assert res.returncode == 1
     assert "is not an earlier output of -json" in res.stdout
     assert (other / "events0.bin").read_bytes() == whole
+
+
+def test_variants_named_twice_or_wrong(case_dir, foam_env):
+    """-variants: a name given twice is refused; a variant's bad entry is
+    reported under the variants file and the variant's name (it named
+    the cloud's dictionary, whose entries the variant is merged over)."""
+    c = gas(case_dir / "gas")
+    run_case(c)
+    v = c / "variants"
+    v.write_text("x { agglomerationModel MAM; }\n"
+                 "x { agglomerationModel EAM; }\n")
+    res = _replay_cmd(c, "-variants", str(v))
+    assert res.returncode == 1 and "duplicate entry: x" in res.stdout
+    v.write_text("y { particleCollision { en 1.5; } }\n")
+    res = _replay_cmd(c, "-variants", str(v))
+    assert res.returncode == 1
+    fatal = res.stdout.split("FOAM FATAL", 1)[1]
+    assert "en" in fatal and f"{v}/y/particleCollision" in fatal, \
+        fatal[:1500]

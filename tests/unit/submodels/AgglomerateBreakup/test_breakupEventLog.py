@@ -229,3 +229,25 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     assert res.returncode != 0, res.stdout[-1500:]
     assert f"holds {later} events after time {first}" in res.stdout
     assert "break-up-event log" in res.stdout
+
+
+def test_variants_named_twice_or_wrong(case_dir, foam_env):
+    """breakupReplay -variants: a variant name given twice is refused
+    (the later one replaced the earlier silently); a variant's bad entry
+    is reported under the variants file's name, not the cloud's."""
+    case = shear_case(case_dir / "run")
+    boxcase.run_case(case)
+    v = case / "variants"
+    v.write_text('a { strength { rumpfPrefactor 1.0; } }\n'
+                 'a { strength { rumpfPrefactor 1.1; } }\n')
+    res = run([foam_bin("breakupReplay"), "-variants", str(v)], case,
+              "log.twice", check=False)
+    assert res.returncode == 1
+    assert "duplicate entry: a" in res.stdout
+    assert f"{v} at line 2" in res.stdout
+    v.write_text('b { strength { rumpfPrefactor 5; } }\n')
+    res = run([foam_bin("breakupReplay"), "-variants", str(v)], case,
+              "log.range", check=False)
+    assert res.returncode == 1
+    fatal = (res.stdout).split("FOAM FATAL", 1)[1]
+    assert "rumpfPrefactor" in fatal and str(v) in fatal, fatal[:1500]

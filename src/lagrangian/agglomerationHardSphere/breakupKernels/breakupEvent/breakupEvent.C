@@ -194,7 +194,8 @@ std::string Foam::breakupEvent::invalid
            << text(load.dragForce) << ", wall impact speed "
            << load.wallImpactSpeed << ", strain rate (" << S.xx() << " "
            << S.xy() << " " << S.xz() << " " << S.yy() << " " << S.yz()
-           << " " << S.zz() << "), ratio " << ratio << " (valid: epsilon 0-" << epsilonMax
+           << " " << S.zz() << "), ratio " << ratio
+           << " (valid: epsilon 0-" << epsilonMax
            << " m2/s3, nu " << nuMin << "-" << nuMax << " m2/s, rho "
            << rhoMin << "-" << rhoMax << " kg/m3, each component of the"
            << " drag force within +-1 N, wall impact speed 0-" << impactMax
