@@ -21,6 +21,7 @@ and MAM in one run for one-way coupled configurations, one per run for the
 two-way coupled ones; counters zeroed at its start).
 """
 
+import argparse
 import math
 import sys
 from pathlib import Path
@@ -330,29 +331,30 @@ def progress(case):
 # ------------------------------------------------------------------- main
 
 def main(argv):
-    if len(argv) < 2:
-        print(__doc__)
-        return 1
-    cmd = argv[1]
-    if cmd == "settings":
-        args = argv[2:]
-        nprocs = 1
-        if args[:1] == ["-np"]:
-            if len(args) < 2 or not args[1].isdigit() or int(args[1]) < 1:
-                sys.exit("channel.py settings: -np needs a positive"
-                         " number of ranks")
-            nprocs = int(args[1])
-            args = args[2:]
-        if len(args) < 3:
-            print(__doc__)
-            return 1
-        sys.stdout.write(settings(args[0], args[1], args[2],
-                                  tuple(args[3:]), nprocs))
-    elif cmd == "init":
-        init(argv[2])
+    ap = argparse.ArgumentParser(
+        prog="channel.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    st = sub.add_parser("settings", help="the caseSettings of one stage, "
+                        "on standard output")
+    st.add_argument("-np", type=int, default=1,
+                    help="MPI ranks of the stage (default 1)")
+    st.add_argument("preset", help="a preset of the presets file")
+    st.add_argument("config", help="a configuration (C1 ... R60)")
+    st.add_argument("stage", choices=STAGES, help="the stage")
+    st.add_argument("models", nargs="*", help="the agglomeration stage's "
+                    "clouds (EAM, MAM)")
+    it = sub.add_parser("init", help="the initial flow of the unladen "
+                        "stage (mean profile and seeded perturbations)")
+    it.add_argument("case", help="the unladen case folder")
+    a = ap.parse_args(argv[1:])
+    if a.cmd == "settings":
+        if a.np < 1:
+            ap.error("settings: -np needs a positive number of ranks")
+        sys.stdout.write(settings(a.preset, a.config, a.stage,
+                                  tuple(a.models), a.np))
     else:
-        print(__doc__)
-        return 1
+        init(a.case)
     return 0
 
 

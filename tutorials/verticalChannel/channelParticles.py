@@ -16,6 +16,7 @@ A.11).
 The driver (channelRuns.py) calls branch_clouds directly: the released
 cloud becomes one cloud per agglomeration model."""
 
+import argparse
 import re
 import shutil
 import sys
@@ -229,13 +230,22 @@ def seed_pairs(case, clouds):
 # ------------------------------------------------------------------- main
 
 def main(argv):
-    if len(argv) >= 3 and argv[1] == "release":
-        release(argv[2])
-    elif len(argv) >= 3 and argv[1] == "seedPairs":
-        seed_pairs(argv[2], argv[3:])
+    ap = argparse.ArgumentParser(
+        prog="channelParticles.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    r = sub.add_parser("release", help="the configuration's particles at "
+                       "the case's latest time")
+    r.add_argument("case", help="the release stage's case folder")
+    s = sub.add_parser("seedPairs", help="the smoke preset's seeded pairs "
+                       "at the case's latest time")
+    s.add_argument("case", help="the agglomeration stage's case folder")
+    s.add_argument("clouds", nargs="*", help="the clouds (EAM, MAM)")
+    a = ap.parse_args(argv[1:])
+    if a.cmd == "release":
+        release(a.case)
     else:
-        print(__doc__)
-        return 1
+        seed_pairs(a.case, a.clouds)
     return 0
 
 

@@ -11,6 +11,7 @@ particle picture (channelPlots.py).
 Every run's statistics come from postProcessing/<model>HardSphere of its
 agglomeration stage (counters zeroed at the start of the stage)."""
 
+import argparse
 import json
 import math
 import re
@@ -202,10 +203,23 @@ def post(pname, reference=False):
     return 1 if nf else 0
 
 
+def main(argv):
+    ap = argparse.ArgumentParser(
+        prog="channelPost.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("preset", help="the preset whose runs/PRESET is "
+                    "post-processed")
+    ap.add_argument("--reference", action="store_true",
+                    help="write the committed reference results/PRESET "
+                    "instead of runs/PRESET/report")
+    a = ap.parse_args(argv)
+    try:
+        channel.preset(a.preset)
+    except SystemExit as e:
+        sys.stderr.write(f"{e}\n")
+        return 1
+    return post(a.preset, a.reference)
+
+
 if __name__ == "__main__":
-    args = sys.argv[1:]
-    ref = "--reference" in args
-    args = [a for a in args if a != "--reference"]
-    if len(args) != 1:
-        sys.exit(__doc__)
-    sys.exit(post(args[0], ref))
+    sys.exit(main(sys.argv[1:]))
