@@ -10,6 +10,7 @@ The gradient the meanVelocityForce reports must match the discrete value
 to 1e-6 and the analytic one to the discretisation error (1 %).
 All injected particles must still be in the domain at the end."""
 
+import argparse
 import json
 import re
 import sys
@@ -18,6 +19,10 @@ from pathlib import Path
 from aggloTools import cloud, regression as reg, times as ftimes
 from aggloTools.foamfile import read_dict
 
+argparse.ArgumentParser(
+    prog="checkPoiseuille.py", description=__doc__.split("\n\n")[0],
+    epilog="Run by ./Allrun after the solver, in the tutorial's folder; "
+    "no options.").parse_args()
 case = Path(__file__).resolve().parent
 
 nu = float(read_dict(case / "constant/transportProperties")["nu"])

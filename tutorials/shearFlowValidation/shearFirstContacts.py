@@ -23,6 +23,7 @@ replay is the approach itself (and the noise of both ensembles).
         OUT (default results/PRESET): firstContactsSpinless.json, .txt
 """
 
+import argparse
 import json
 import math
 import shutil
@@ -191,8 +192,19 @@ def measure(preset, runs_dir=None, out_dir=None):
     return res
 
 
+def main(argv):
+    ap = argparse.ArgumentParser(
+        prog="shearFirstContacts.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("preset", help="the preset whose runs are measured")
+    ap.add_argument("runs", nargs="?", help="the folder holding its runs "
+                    "(default runs/PRESET)")
+    ap.add_argument("out", nargs="?", help="the output folder (default "
+                    "results/PRESET)")
+    a = ap.parse_args(argv)
+    measure(a.preset, a.runs, a.out)
+    return 0
+
+
 if __name__ == "__main__":
-    if len(sys.argv) not in (2, 3, 4):
-        sys.exit(__doc__)
-    measure(*sys.argv[1:])
-    sys.exit(0)
+    sys.exit(main(sys.argv[1:]))

@@ -17,6 +17,7 @@ the Saffman-Turner check), EAM, MAM, and optionally bounce (physical
 rebounds, no agglomeration: the secondary first-contact check of B.6).
 """
 
+import argparse
 import sys
 from pathlib import Path
 
@@ -251,23 +252,40 @@ def progress(case):
 # -------------------------------------------------------------------- main
 
 def main(argv):
-    if len(argv) >= 3 and argv[0] == "settings":
-        print(settings_text(settings(argv[1], argv[2])))
-        return 0
-    if len(argv) == 2 and argv[0] == "init":
-        init(argv[1])
-        return 0
-    if len(argv) == 2 and argv[0] == "progress":
-        print(progress(argv[1]))
-        return 0
-    if len(argv) == 2 and argv[0] == "settle":
-        times.set_aside_incomplete_times(argv[1])
-        return 0
-    if len(argv) >= 2 and argv[0] == "post":
+    ap = argparse.ArgumentParser(
+        prog="shearFlow.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    s = sub.add_parser("settings", help="the caseSettings of one run, on "
+                       "standard output")
+    s.add_argument("preset", help="a preset of the presets file")
+    s.add_argument("run", choices=RUNS, help="the run")
+    for name, what in (("init", "the exact Couette profile and the "
+                        "particles"), ("settle", "set aside a last time "
+                        "folder whose write was cut off"),
+                       ("progress", "simulated time and ETA of a run")):
+        sub.add_parser(name, help=what).add_argument(
+            "case", help="the run's case folder")
+    p = sub.add_parser("post", help="the report of a preset's runs "
+                       "(shearPost.py; exit 1 on a FAIL)")
+    p.add_argument("preset", help="the preset")
+    p.add_argument("runs", nargs="?", help="the folder holding its runs "
+                   "(default runs/PRESET)")
+    p.add_argument("out", nargs="?", help="the report's folder (default "
+                   "results/PRESET)")
+    a = ap.parse_args(argv)
+    if a.cmd == "settings":
+        print(settings_text(settings(a.preset, a.run)))
+    elif a.cmd == "init":
+        init(a.case)
+    elif a.cmd == "progress":
+        print(progress(a.case))
+    elif a.cmd == "settle":
+        times.set_aside_incomplete_times(a.case)
+    else:
         import shearPost
-        return shearPost.post(argv[1], *(argv[2:4]))
-    print(__doc__)
-    return 2
+        return shearPost.post(a.preset, a.runs or None, a.out or None)
+    return 0
 
 
 if __name__ == "__main__":

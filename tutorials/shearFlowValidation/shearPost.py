@@ -8,6 +8,7 @@ summary.json, regression.txt and the plots of results/<preset>/.
                                                on results/PRESET/summary.json
 """
 
+import argparse
 import json
 import math
 import re
@@ -319,7 +320,29 @@ def regression_table(preset, rows):
     return "\n".join(lines)
 
 
+def main(argv):
+    ap = argparse.ArgumentParser(
+        prog="shearPost.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    p = sub.add_parser("post", help="the report of a preset's runs (exit "
+                       "1 on a FAIL)")
+    p.add_argument("preset", help="the preset")
+    p.add_argument("runs", nargs="?", help="the folder holding its runs "
+                   "(default runs/PRESET)")
+    p.add_argument("out", nargs="?", help="the report's folder (default "
+                   "results/PRESET)")
+    r = sub.add_parser("rejudge", help="the statements judged again on "
+                       "results/PRESET/summary.json")
+    r.add_argument("preset", help="the preset")
+    # 'shearPost.py PRESET ...' (no subcommand) is post
+    if argv and argv[0] not in ("post", "rejudge", "-h", "--help"):
+        argv = ["post"] + list(argv)
+    a = ap.parse_args(argv)
+    if a.cmd == "rejudge":
+        return rejudge(a.preset)
+    return post(a.preset, a.runs or None, a.out or None)
+
+
 if __name__ == "__main__":
-    if len(sys.argv) == 3 and sys.argv[1] == "rejudge":
-        sys.exit(rejudge(sys.argv[2]))
-    sys.exit(post(*sys.argv[1:4]) if len(sys.argv) > 1 else __doc__)
+    sys.exit(main(sys.argv[1:]))

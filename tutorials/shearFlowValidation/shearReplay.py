@@ -14,6 +14,7 @@ changed outcome would do to later collisions is not included. The detect
 run's first contacts (ghost: particles pass through each other) are the
 undisturbed ensemble of the Saffman-Turner kernel."""
 
+import argparse
 import json
 import sys
 from pathlib import Path
@@ -63,8 +64,17 @@ def replay(preset, runs_dir=None, out_dir=None):
     return summary
 
 
+def main(argv):
+    ap = argparse.ArgumentParser(
+        prog="shearReplay.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("preset", help="the preset whose runs are replayed")
+    ap.add_argument("out", nargs="?", help="the output folder (default "
+                    "results/PRESET)")
+    a = ap.parse_args(argv)
+    replay(a.preset, None, a.out)
+    return 0
+
+
 if __name__ == "__main__":
-    if len(sys.argv) not in (2, 3):
-        sys.exit(__doc__)
-    replay(sys.argv[1], None, sys.argv[2] if len(sys.argv) == 3 else None)
-    sys.exit(0)
+    sys.exit(main(sys.argv[1:]))

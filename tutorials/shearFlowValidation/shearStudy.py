@@ -16,6 +16,7 @@ Runs live in runs/<preset>/study/<variant>/<run>; ./Allrun -study runs
 them (resumable) and then the post-processing.
 """
 
+import argparse
 import json
 import math
 import sys
@@ -260,18 +261,33 @@ def post(preset, runs_dir=None, out_dir=None):
 # ------------------------------------------------------------------ main
 
 def main(argv):
-    if len(argv) == 2 and argv[0] == "list":
+    ap = argparse.ArgumentParser(
+        prog="shearStudy.py", description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    sub.add_parser("list", help="the study's runs, 'variant run' lines"
+                   ).add_argument("preset", help="the preset")
+    s = sub.add_parser("settings", help="the caseSettings of one run")
+    for name, what in (("preset", "the preset"),
+                       ("variant", "a variant of the study file"),
+                       ("run", "the run (EAM, MAM, detect...)")):
+        s.add_argument(name, help=what)
+    p = sub.add_parser("post", help="study.json, study.txt and the plots "
+                       "(exit 1 if a run is missing)")
+    p.add_argument("preset", help="the preset")
+    p.add_argument("out", nargs="?", help="the output folder (default "
+                   "results/study[-PRESET])")
+    a = ap.parse_args(argv)
+    if a.cmd == "list":
         shearFlow.presets()
-        for variant, run in run_list(argv[1]):
+        for variant, run in run_list(a.preset):
             print(variant, run)
         return 0
-    if len(argv) == 4 and argv[0] == "settings":
-        print(shearFlow.settings_text(run_settings(*argv[1:])))
+    if a.cmd == "settings":
+        print(shearFlow.settings_text(run_settings(a.preset, a.variant,
+                                                   a.run)))
         return 0
-    if len(argv) in (2, 3) and argv[0] == "post":
-        return post(argv[1], None, argv[2] if len(argv) == 3 else None)
-    print(__doc__)
-    return 2
+    return post(a.preset, None, a.out)
 
 
 if __name__ == "__main__":

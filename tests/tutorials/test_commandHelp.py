@@ -1,0 +1,84 @@
+"""Every user-facing command answers -h (or -help) with what it does and
+its options, exit status 0, and runs nothing: the Allruns, Allcleans and
+Alltest of the project and its tutorials, the set-up, the tutorials'
+Python drivers and the solver and utilities. (-h of an Allclean cleaned
+the build; channelPost.py took -h for a preset; channel.py and
+channelParticles.py exited 1.)"""
+
+import subprocess
+import sys
+
+import pytest
+
+from aggloTools.runner import foam_bin, project_dir
+
+ROOT = project_dir()
+TUT = ROOT / "tutorials"
+
+#: (folder, command, words the help must hold)
+SHELL = [
+    (ROOT, ["./Allrun", "-help"], "-preset"),
+    (ROOT, ["./Allclean", "-help"], "No options"),
+    (ROOT, ["./Allwmake", "-help"], "wmake"),
+    (ROOT, ["bin/aggloSetup", "-h"], "aggloSetup"),
+] + [(TUT / t, ["./Allrun", "-help"], w) for t, w in (
+    ("verticalChannel", "-preset"), ("shearFlowValidation", "-preset"),
+    ("breakupShear", "-preset"), ("laminarChannel", "no options"))] + [
+    (TUT / t, ["./Allclean", "-help"], "No options") for t in (
+        "verticalChannel", "shearFlowValidation", "breakupShear",
+        "laminarChannel")]
+
+PYTHON = [
+    ("verticalChannel", "channel.py", "settings"),
+    ("verticalChannel", "channelParticles.py", "release"),
+    ("verticalChannel", "channelPost.py", "--reference"),
+    ("verticalChannel", "channelRegime.py", "post"),
+    ("verticalChannel", "channelReplay.py", "--reference"),
+    ("verticalChannel", "channelRuns.py", "-preset"),
+    ("shearFlowValidation", "shearFlow.py", "settings"),
+    ("shearFlowValidation", "shearPost.py", "rejudge"),
+    ("shearFlowValidation", "shearReplay.py", "preset"),
+    ("shearFlowValidation", "shearFirstContacts.py", "runs"),
+    ("shearFlowValidation", "shearStudy.py", "list"),
+    ("shearFlowValidation", "shearRuns.py", "-preset"),
+    ("breakupShear", "breakupShear.py", "-preset"),
+    ("laminarChannel", "checkPoiseuille.py", "usage"),
+]
+
+APPS = ["aggloPimpleFoam", "hardSphereReplay", "breakupReplay",
+        "hardSphereCollide"]
+
+
+def _ids(rows):
+    return [f"{d.name}/{' '.join(c)}" for d, c, _ in rows]
+
+
+@pytest.mark.parametrize("folder, cmd, words", SHELL, ids=_ids(SHELL))
+def test_shell_commands(foam_env, folder, cmd, words):
+    before = sorted(p.name for p in folder.iterdir())
+    res = subprocess.run(cmd, cwd=folder, capture_output=True, text=True,
+                         timeout=120)
+    assert res.returncode == 0, res.stdout[-1000:] + res.stderr[-1000:]
+    assert words in res.stdout + res.stderr
+    assert sorted(p.name for p in folder.iterdir()) == before
+
+
+@pytest.mark.parametrize("tutorial, script, words", PYTHON,
+                         ids=[s for _, s, _ in PYTHON])
+def test_python_drivers(foam_env, tutorial, script, words):
+    folder = TUT / tutorial
+    before = sorted(p.name for p in folder.iterdir())
+    res = subprocess.run([sys.executable, script, "-h"], cwd=folder,
+                         capture_output=True, text=True, timeout=120)
+    assert res.returncode == 0, res.stdout[-1000:] + res.stderr[-1000:]
+    assert words in res.stdout
+    assert sorted(p.name for p in folder.iterdir()) == before
+
+
+@pytest.mark.parametrize("app", APPS)
+def test_applications(foam_env, app, tmp_path):
+    res = subprocess.run([foam_bin(app), "-help"], cwd=tmp_path,
+                         capture_output=True, text=True, timeout=120)
+    assert res.returncode == 0, res.stdout[-1000:]
+    assert "Usage:" in res.stdout and "-case" in res.stdout
+    assert list(tmp_path.iterdir()) == []
