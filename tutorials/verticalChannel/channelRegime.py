@@ -13,6 +13,7 @@ work tree, --runs). Nothing is tuned: every variant run is reported.
                                             J > 1 each one's output goes
                                             to runs/<variant>.log)
     channelRegime.py post [--runs DIR] [--out DIR | --reference]
+                          [--earlier JSON]
                                             regime.json, regime.txt,
                                             regime.png in DIR/report-regime
                                             (--reference: the committed
@@ -21,7 +22,9 @@ work tree, --runs). Nothing is tuned: every variant run is reported.
 --runs: the folder holding runs/<preset> (default: this tutorial's runs/);
 post takes every variant with a finished agglomeration stage there;
 of the others it reports how far they are and what their release and
-dispersion stages show so far (an interim, not the window). A --runs
+dispersion stages show so far (an interim, not the window). --earlier
+JSON keeps the finished results of that earlier regime.json for the
+variants whose runs are not under --runs (marked so). A --runs
 folder that holds no variant's runs is refused before anything is
 written; the three files are written together (each to a temporary
 file first), so a failed post leaves the earlier ones as they were."""
@@ -71,7 +74,25 @@ def post_folder(runs=None, out=None, reference=False):
     return Path(runs or HERE / "runs") / "report-regime"
 
 
-def run_post(runs=None, out=None, names=None, reference=False):
+def earlier_results(path):
+    """The finished variants' results of an earlier regime.json: name ->
+    result (a missing or unreadable file stops naming it)."""
+    try:
+        old = json.loads(Path(path).read_text())
+    except (OSError, ValueError) as e:
+        raise SystemExit(f"channelRegime.py post: --earlier {path}: {e}")
+    return {v["name"]: v["result"] for v in old.get("variants", [])
+            if v.get("result")}
+
+
+def run_post(runs=None, out=None, names=None, reference=False,
+             earlier=None):
+    """The study's report of the variants under runs; with earlier (an
+    earlier regime.json), a variant with no runs there keeps its
+    finished result from it (said so: its runs are gone, its numbers
+    were measured), so that a variant run later is compared with those
+    run before."""
+    kept = earlier_results(earlier) if earlier else {}
     runs_dir = Path(runs or HERE / "runs")
     if not runs_dir.is_dir():
         raise SystemExit(f"channelRegime.py post: no folder {runs_dir}")
@@ -89,6 +110,10 @@ def run_post(runs=None, out=None, names=None, reference=False):
         v = {"name": name, "changes": what.get(name, "-"),
              "runs": str(runs_base(runs, name)),
              "result": analyse_variant(name, runs)}
+        if v["result"] is None and name in kept \
+                and not runs_base(runs, name).is_dir():
+            v["result"] = kept[name]
+            v["from"] = str(earlier)
         if v["result"] is None:
             v["progress"] = progress(name, runs)
         res["variants"].append(v)
@@ -151,6 +176,9 @@ def main(argv):
     where = q.add_mutually_exclusive_group()
     where.add_argument("--out")
     where.add_argument("--reference", action="store_true")
+    q.add_argument("--earlier", help="an earlier regime.json whose "
+                   "finished variants are kept where their runs are not "
+                   "under --runs (e.g. results/regime/regime.json)")
     q.add_argument("variants", nargs="*")
     a = ap.parse_args(argv[1:])
     if getattr(a, "j", 1) < 1 or getattr(a, "np", 1) < 1:
@@ -168,7 +196,8 @@ def main(argv):
                      "study from a clone outside the work tree instead")
         return run_variants(a.variants or known, a.np, a.j)
     else:
-        run_post(a.runs, a.out, a.variants or None, a.reference)
+        run_post(a.runs, a.out, a.variants or None, a.reference,
+                 a.earlier)
     return 0
 
 

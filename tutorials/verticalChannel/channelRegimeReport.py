@@ -55,6 +55,11 @@ def table(res):
                 f"{_g(r['u_tau_over_U_B']['agglomeration'], '.4f'):>9s} "
                 f"{r['times']['wallTotal_s'] / 3600:6.2f} "
                 f"{r['times']['cpu_s'] / 3600:6.2f}")
+    kept = [v for v in res["variants"] if v.get("from")]
+    if kept:
+        lines += ["", "Kept from " + kept[0]["from"] + " (their runs are "
+                  "not under --runs; the numbers as measured then): "
+                  + ", ".join(v["name"] for v in kept) + "."]
     lines += ["", "fcol*s2, fagg*s2: Eq. 87 over the window, scaled by "
               "(6e6/N)^2; +-: sigma (batch means or Poisson); x paper: "
               "sim/paper; alpha_end: N_agg/N_col at the window's end; "

@@ -110,3 +110,29 @@ def test_report_head_factors_and_comparison(smoke_runs):
     assert len(c1) == 2 and all(" 0 " in line and "agree" in line
                                 for line in c1), c1
     assert " 0 differ" in text.splitlines()[-1], text.splitlines()[-1]
+
+
+def test_regime_post_keeps_earlier_results(smoke_runs, tmp_path):
+    """post --earlier: a variant whose runs are not under --runs keeps its
+    finished result from the earlier regime.json, marked so (the study's
+    runs were lost with a machine; its committed numbers stand), and is
+    compared with the variants run since; without --earlier it is 'not
+    run'."""
+    regime = script("channelRegime")
+    runs = smoke_runs[2] / "runs"
+    committed = regime.HERE / "results" / "regime" / "regime.json"
+    before = json.loads(committed.read_text())
+    old64 = [v for v in before["variants"] if v["name"] == "regime64"][0]
+    res = regime.run_post(runs, tmp_path, ["smoke", "regime64", "printed"],
+                          earlier=committed)
+    v64 = [v for v in res["variants"] if v["name"] == "regime64"][0]
+    assert v64["result"] == old64["result"]
+    assert v64["from"] == str(committed)
+    assert "Kept from" in (tmp_path / "regime.txt").read_text()
+    # the pair printed over regime64: only printed is missing now
+    assert res["wallNormal"] == [{"variant": "printed", "base": "regime64",
+                                  "missing": ["printed"]}]
+    res = regime.run_post(runs, tmp_path, ["smoke", "regime64"])
+    v64 = [v for v in res["variants"] if v["name"] == "regime64"][0]
+    assert v64["result"] is None and "from" not in v64
+    assert json.loads(committed.read_text()) == before
