@@ -20,7 +20,10 @@ value, and all four, lie within the factor, and the cost of a C1 there
 (also where variants are in the regime but none is affordable: where
 the trend enters the regime is the cheapest grid it points to);
 with three grids, the same read off the finest two grids' law too
-(channelRegimeTrend.finest_pair)."""
+(channelRegimeTrend.finest_pair). The printed resolution (PRINTED, the
+wall-normal grid the paper prints over PRINTED_BASE) is judged against
+factors 2 and 1.5, and its worst factor against its base's says which
+grid the Table D.6 matrix belongs on."""
 
 import math
 
@@ -30,6 +33,10 @@ import channelRegimeNeeds as needs
 FACTOR = 2.0
 #: Largest cost of the preset's C1 on 2 cores [h]
 BUDGET_H = 3.0
+#: The printed resolution and its base (the wall-normal grid alone),
+#: judged against these factors too
+PRINTED, PRINTED_BASE = "printed", "regime64"
+PRINTED_FACTORS = (2.0, 1.5)
 #: The four values judged, per model: key of the result, its name
 QUANTITIES = (("colFactorToPaper", "f_col x s^2"),
               ("alphaFactorToPaper", "alpha_f"))
@@ -81,6 +88,7 @@ def verdict(res, models):
     at128 = {m: {q: band_class(res.get("gridTrend", {}).get(m, {}).get(q))
                  for q in ("f_col_scaled", "alpha_f")} for m in models}
     return {"factor": FACTOR, "budget_h": BUDGET_H, "variants": judged,
+            "printed": printed(judged),
             "preset": preset["name"] if preset else None,
             "closest": (closest["name"] if closest and not preset
                         else None),
@@ -91,6 +99,51 @@ def verdict(res, models):
                 needs.needs(res["gridTrendFinestPair"], judged, models,
                             FACTOR)
                 if res.get("gridTrendFinestPair") else None)}
+
+
+def printed(judged):
+    """The printed resolution's verdict: whether its four values lie
+    within each factor of PRINTED_FACTORS of Table 3's C1, its worst
+    factor against its base's, and the grid that this points the Table
+    D.6 matrix to (None before the variant has finished)."""
+    by = {j["name"]: j for j in judged}
+    j, base = by.get(PRINTED), by.get(PRINTED_BASE)
+    if not j:
+        return None
+    out = {"worst": j["worst"], "worstAt": j["worstAt"],
+           "within": {f"{f:g}": j["worst"] <= f for f in PRINTED_FACTORS},
+           "baseWorst": base["worst"] if base else None}
+    if base is None:
+        out["matrixGrid"] = None
+    elif j["worst"] < base["worst"] and j["worst"] <= FACTOR:
+        out["matrixGrid"] = PRINTED
+    else:
+        out["matrixGrid"] = PRINTED_BASE
+    return out
+
+
+def printed_lines(pv):
+    """The printed resolution's lines of the verdict."""
+    if pv is None:
+        return [f"  the printed resolution ({PRINTED}): not finished, n/r"]
+    within = "; ".join(f"within a factor {f}: "
+                       + ("yes" if ok else "no")
+                       for f, ok in pv["within"].items())
+    out = [f"  the printed resolution ({PRINTED}): worst factor "
+           f"{pv['worst']:.3g} ({pv['worstAt']}); {within}"]
+    if pv["matrixGrid"] is None:
+        out.append(f"  its base {PRINTED_BASE} not finished: the matrix's "
+                   "grid n/r")
+    elif pv["matrixGrid"] == PRINTED:
+        out.append(f"  closer to the paper than {PRINTED_BASE} (worst "
+                   f"factor {pv['baseWorst']:.3g}) and within the factor"
+                   f" {FACTOR:g}: the Table D.6 matrix belongs on the "
+                   "printed grid")
+    else:
+        out.append(f"  not closer to the paper than {PRINTED_BASE} (worst"
+                   f" factor {pv['baseWorst']:.3g}) within the factor "
+                   f"{FACTOR:g}: the matrix stays at {PRINTED_BASE}")
+    return out
 
 
 def lines(vd, models):
@@ -126,4 +179,4 @@ def lines(vd, models):
         if vd.get("needsFinestPair"):
             out += needs.lines(vd["needsFinestPair"], models,
                                "the finest two grids' law")
-    return out
+    return out + printed_lines(vd.get("printed"))

@@ -127,3 +127,32 @@ def test_in_the_regime_but_none_affordable(vd):
     assert "EAM f_col x s^2: within for n 32-128" in text
     assert vd.lines(vd.verdict({"variants": []}, ("EAM",)),
                     ("EAM",))[1] == "  no variant has finished"
+
+
+def test_printed_resolution_verdict(vd):
+    """The printed resolution against factors 2 and 1.5, and the grid the
+    matrix belongs on: the printed grid where it is closer to the paper
+    than regime64 and within 2, else regime64; n/r before it finished
+    or without its base."""
+    models = ("EAM", "MAM")
+    base = variant("regime64", 0.61, 2.11, 13.8, mam=(0.62, 1.50))
+    closer = variant("printed", 0.9, 1.3, 70.0, mam=(0.8, 1.4))
+    v = vd.verdict({"variants": [base, closer]}, models)
+    p = v["printed"]
+    assert p["worst"] == pytest.approx(1.4)
+    assert p["within"] == {"2": True, "1.5": True}
+    assert p["matrixGrid"] == "printed"
+    text = "\n".join(vd.lines(v, models))
+    assert "within a factor 2: yes; within a factor 1.5: yes" in text
+    assert "the Table D.6 matrix belongs on the printed grid" in text
+    farther = variant("printed", 0.3, 1.2, 70.0)
+    v = vd.verdict({"variants": [base, farther]}, models)
+    assert v["printed"]["within"] == {"2": False, "1.5": False}
+    assert v["printed"]["matrixGrid"] == "regime64"
+    assert "the matrix stays at regime64" in "\n".join(vd.lines(v, models))
+    v = vd.verdict({"variants": [base]}, models)
+    assert v["printed"] is None
+    assert "the printed resolution (printed): not finished, n/r" in \
+        "\n".join(vd.lines(v, models))
+    v = vd.verdict({"variants": [closer]}, models)
+    assert v["printed"]["matrixGrid"] is None
