@@ -88,6 +88,9 @@ def plots(out, p, res, runs):
         a.set_ylabel(yl)
         a.axvspan(w0, w1, color="0.92", zorder=0)
         a.grid(alpha=0.3)
+    # alpha on a log axis: the paper's 0.2-1.7 % and the start-up's tens
+    # of per cent both show (zeros before the first agglomeration drop)
+    ax[1, 0].set_yscale("log")
     ax[0, 0].legend(fontsize=7)
     ax[1, 0].legend(fontsize=7)
     fig.suptitle(f"verticalChannel {p['name']}: time histories"

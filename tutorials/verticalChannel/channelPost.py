@@ -22,6 +22,7 @@ import numpy as np
 
 import channel
 from aggloTools.stats import read_stats
+from channelMatrixPlot import matrix_figure
 from channelPlots import picture, plots  # noqa: F401 (channelPost.picture)
 from channelRegression import compare, regression, write_regression
 
@@ -193,6 +194,7 @@ def post(pname, reference=False):
     }
     (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
     plots(out, p, res, runs)
+    matrix_figure(out, p, res)
     picture(out, p, runs)
     print((out / "regression.txt").read_text())
     if not reference:

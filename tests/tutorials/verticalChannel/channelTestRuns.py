@@ -46,6 +46,7 @@ def script(name):
     """A script of the tutorial as a module, after the siblings it
     imports (all of them, so that any script can be asked for)."""
     for sibling in ("channel", "channelParticles", "channelPlots",
+                    "channelMatrixPlot",
                     "channelStatements", "channelRegression",
                     "channelPost", "channelRegimeTrend", "channelRegimePairs",
                     "channelRegimeNeeds", "channelRegimeVerdict",

@@ -136,3 +136,25 @@ def test_regime_post_keeps_earlier_results(smoke_runs, tmp_path):
     v64 = [v for v in res["variants"] if v["name"] == "regime64"][0]
     assert v64["result"] is None and "from" not in v64
     assert json.loads(committed.read_text()) == before
+
+
+def test_matrix_figure(smoke_runs, tmp_path):
+    """matrix.png: each run's f_col x s^2, f_agg x s^2 and alpha_f with
+    its sigma beside Table D.6's values, as the report's summary has
+    them (C1 and C2 of the 2-rank smoke runs)."""
+    mp = script("channelMatrixPlot")
+    channel = script("channel")
+    summary = json.loads((smoke_runs[2] / "runs" / "smoke" / "report"
+                          / "summary.json").read_text())
+    assert (smoke_runs[2] / "runs" / "smoke" / "report"
+            / "matrix.png").stat().st_size > 10000
+    res = {tuple(k.split()): v for k, v in summary["runs"].items()}
+    pts = mp.matrix_figure(tmp_path, channel.preset("smoke"), res)
+    assert (tmp_path / "matrix.png").stat().st_size > 10000
+    for m in ("EAM", "MAM"):
+        c, v, s, paper = pts["col"][m][0]
+        r = res[("C1", m)]
+        assert c == "C1" and v == r["f_col_scaled"]
+        assert s == pytest.approx(r["sigma_col"] * r["scale"])
+        assert paper == channel.TABLE_D6["C1"]["fcol"][m]
+        assert [q[0] for q in pts["agg"][m]] == ["C1", "C2"]
