@@ -1,7 +1,7 @@
 """Every user-facing command answers -h (or -help) with what it does and
 its options, exit status 0, and runs nothing: the Allruns, Allcleans and
 Alltest of the project and its tutorials, the set-up, the tutorials'
-Python drivers and the solver and utilities. (-h of an Allclean cleaned
+Python drivers, the benchmarks and the solver and utilities. (-h of an Allclean cleaned
 the build; channelPost.py took -h for a preset; channel.py and
 channelParticles.py exited 1.)"""
 
@@ -44,6 +44,9 @@ PYTHON = [
     ("breakupShear", "breakupShear.py", "-preset"),
     ("laminarChannel", "checkPoiseuille.py", "usage"),
 ]
+#: The benchmarks a user starts (bench/; the others are their modules)
+BENCH = ["caseFileIO.py", "channelCosts.py", "channelCostsVs.py",
+         "channelSolverSettings.py", "hardSphereCloud.py"]
 
 APPS = ["aggloPimpleFoam", "hardSphereReplay", "breakupReplay",
         "hardSphereCollide"]
@@ -72,6 +75,17 @@ def test_python_drivers(foam_env, tutorial, script, words):
                          capture_output=True, text=True, timeout=120)
     assert res.returncode == 0, res.stdout[-1000:] + res.stderr[-1000:]
     assert words in res.stdout
+    assert sorted(p.name for p in folder.iterdir()) == before
+
+
+@pytest.mark.parametrize("script", BENCH)
+def test_benchmarks(foam_env, script):
+    folder = ROOT / "bench"
+    before = sorted(p.name for p in folder.iterdir())
+    res = subprocess.run([sys.executable, script, "-h"], cwd=folder,
+                         capture_output=True, text=True, timeout=120)
+    assert res.returncode == 0, res.stdout[-1000:] + res.stderr[-1000:]
+    assert res.stdout.startswith("usage:")
     assert sorted(p.name for p in folder.iterdir()) == before
 
 
