@@ -56,8 +56,13 @@ def parse_dict(text):
                     raise ValueError("unbalanced braces: a '}' without "
                                      "its '{'")
                 return out
-            if tok.startswith("#"):
-                pos += 1                # a directive and its argument
+            if tok.startswith("#include"):
+                pos += 1                # the directive's file
+                continue
+            if tok.startswith("#"):     # e.g. #default key value;
+                while pos < len(tokens) and tokens[pos] != ";":
+                    pos += 1
+                pos += 1
                 continue
             key = tok.strip('"')
             if key in out:

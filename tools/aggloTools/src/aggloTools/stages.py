@@ -132,7 +132,7 @@ def branch_case(src, dst, nprocs=1, serial=False, extra_constant=None):
 
 #: The marker of a case whose processor folders are complete: written
 #: when decomposePar has succeeded or the folders have been copied whole
-DECOMPOSED = "decomposed"
+DECOMPOSED = "done.decomposePar"
 
 
 def decomposed(case):
