@@ -197,7 +197,12 @@ bool Foam::AgglomerateParcel<ParcelType>::move
 //     again after a rotation);
 //   - a completed track reports its end position to the collision model
 //     (trackedTo).
-// An upgrade of OpenFOAM must compare this function with the new move().
+// An upgrade of OpenFOAM must compare this function with the new move():
+// the upstream function's text (from its last template line to its
+// closing brace) has the SHA-256
+// 39476cb24516d426b9987a82746ef782dd4bcc7f23074127976d02ae3175121b,
+// and tests/setup/test_upstreamCopies.py fails when the installed source
+// differs from it.
 template<class ParcelType>
 template<class TrackCloudType>
 bool Foam::AgglomerateParcel<ParcelType>::trackLinear
