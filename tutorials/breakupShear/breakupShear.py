@@ -23,11 +23,12 @@ import json
 import math
 import shutil
 import sys
+import time
 from pathlib import Path
 
 import numpy as np
 
-from aggloTools import boxcase, stages, times
+from aggloTools import boxcase, runtimes, stages, times
 from aggloTools.cloud import read_cloud
 from aggloTools.progress import line, solver_progress
 from aggloTools.runner import foam_bin
@@ -309,6 +310,8 @@ def work(a):
     base = HERE / "runs" / a.preset
     runs = [(s, g) for s in SERIES for g in p["gammas"]]
     cases = {r: base / case_name(*r) for r in runs}
+    start = time.monotonic()
+    whole = not a.post and not any(c.exists() for c in cases.values())
 
     if not a.post:
         print(f"breakupShear: preset {a.preset}, {len(runs)} runs, {a.j} "
@@ -336,6 +339,8 @@ def work(a):
     (out / "table.txt").write_text(text)
     plots(rows, out)
     print(text + f"Results: {out}")
+    print(runtimes.line(f"breakupShear {a.preset}",
+                        time.monotonic() - start, whole))
     return 1 if any(r["verdict"] == "FAIL" for r in rows) else 0
 
 

@@ -25,7 +25,6 @@ replay is the approach itself (and the noise of both ensembles).
 
 import argparse
 import json
-import math
 import shutil
 import sys
 from pathlib import Path
@@ -33,6 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from aggloTools import eventlog, regression as reg
+from aggloTools.uncertainty import wilson
 
 import shearCase
 
@@ -40,16 +40,6 @@ HERE = Path(__file__).resolve().parent
 KERNELS = eventlog.en_variants((0.97,), ("EAM", "MAM"))
 #: The quantiles of the spin at contact that are reported
 QUANTILES = (0.1, 0.5, 0.9)
-
-
-def wilson(k, n, z=1.96):
-    """The 95 % Wilson interval of a binomial fraction k/n."""
-    if n == 0:
-        return (None, None)
-    p = k / n
-    c = (p + z * z / (2 * n)) / (1 + z * z / n)
-    h = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
-    return (c - h, c + h)
 
 
 def spinless_case(run, where):

@@ -38,10 +38,11 @@ import io
 import os
 import shutil
 import sys
+import time
 import traceback
 from pathlib import Path
 
-from aggloTools import stages, times
+from aggloTools import runtimes, stages, times
 from aggloTools.runner import foam_bin
 
 import shearFlow
@@ -127,6 +128,9 @@ def work(a):
         sys.stderr.write(f"Allrun: {e}\n")
         return 1
 
+    start = time.monotonic()
+    whole = not a.post and not any(run_dir(a, r).exists() for r in runs)
+    job = f"shearFlowValidation {a.preset}" + (" study" if a.study else "")
     if not a.post:
         print(f"shearFlowValidation: preset {a.preset}, runs: "
               f"{' '.join(runs)}, {a.j} at a time", flush=True)
@@ -150,7 +154,9 @@ def work(a):
         if a.reference:
             out = "results/study" if a.preset == "small" \
                 else f"results/study-{a.preset}"
-        return shearStudy.post(a.preset, None, out)
+        status = shearStudy.post(a.preset, None, out)
+        print(runtimes.line(job, time.monotonic() - start, whole))
+        return status
 
     out = f"runs/{a.preset}/report" if not a.reference \
         else f"results/{a.preset}"
@@ -169,6 +175,7 @@ def work(a):
         status = 1
     print()
     print(f"Results: {HERE / out} (regression.txt, summary.json, *.png)")
+    print(runtimes.line(job, time.monotonic() - start, whole))
     return status
 
 

@@ -5,8 +5,7 @@ profiles, particle velocities and the pyvista picture of the particles."""
 import numpy as np
 
 import channel
-from aggloTools import cloud, times
-from aggloTools.foamfile import read_dict
+from aggloTools import cloud, times, uncertainty
 from aggloTools.stats import last_output, read_table
 
 HERE = channel.HERE
@@ -91,6 +90,13 @@ def plots(out, p, res, runs):
     # alpha on a log axis: the paper's 0.2-1.7 % and the start-up's tens
     # of per cent both show (zeros before the first agglomeration drop)
     ax[1, 0].set_yscale("log")
+    alphas = [TABLE_D6[k[0]]["fagg"][k[1]] / TABLE_D6[k[0]]["fcol"][k[1]]
+              for k in keys if k[0] in TABLE_D6]
+    data = [v for k in keys for v in np.asarray(res[k]["_series"]["nAgg"]
+            / np.maximum(res[k]["_series"]["nCol"], 1)) if v > 0]
+    if alphas or data:
+        # the paper's alpha inside the axis, however far the run is
+        ax[1, 0].set_ylim(min(alphas + data) / 3, max(alphas + data) * 3)
     ax[0, 0].legend(fontsize=7)
     ax[1, 0].legend(fontsize=7)
     fig.suptitle(f"verticalChannel {p['name']}: time histories"
@@ -110,8 +116,13 @@ def plots(out, p, res, runs):
         t = read_table(f)
         if len(t["k"]):
             # each run's bar inside its size's integer bin
-            ax.bar(t["k"] - 0.4 + (i + 0.5) * width, t["count"],
-                   width=width, label=f"{k[0]} {k[1]}", color=f"C{i}")
+            xb = t["k"] - 0.4 + (i + 0.5) * width
+            ax.bar(xb, t["count"], width=width, label=f"{k[0]} {k[1]}",
+                   color=f"C{i}")
+            # the counts written on the bars: the log axis hides 24 vs 20
+            for xx, n in zip(xb, t["count"]):
+                ax.text(xx, n * 1.08, f"{n:.0f}", ha="center",
+                        va="bottom", fontsize=7)
             kmax = max(kmax, int(np.max(t["k"])))
             nmax = max(nmax, float(np.max(t["count"])))
     ax.set_xticks(range(2, kmax + 1))
@@ -121,59 +132,123 @@ def plots(out, p, res, runs):
     ax.set_yscale("log")
     ax.set_ylim(0.5, 3 * nmax)     # room above the tallest bar
     ax.legend(fontsize=8)
-    ax.set_title("agglomerates per size at the end of the stage")
+    ends = sorted({f"{res[k]['T_end']:.0f}" for k in keys})
+    ax.set_title("agglomerates per size at the end of the agglomeration"
+                 f" stage (T*agg = {', '.join(ends)})")
     fig.tight_layout()
     fig.savefig(out / "agglomerateSizes.png", dpi=110)
     plt.close(fig)
 
-    # wall-normal profiles
+    profile_plots(out, p, res, runs, plt)
+
+
+#: Events a bin of the collision profiles should hold on average (the
+#: bins are merged from the wall outwards until they do)
+EVENTS_PER_BIN = 10
+
+
+def fold(v):
+    """Mean of the two halves of a profile across the channel, from the
+    wall (bin 0) to the centre: the channel is symmetric in y."""
+    v = np.asarray(v, float)
+    h = len(v) // 2
+    return 0.5 * (v[:h] + v[::-1][:h])
+
+
+def merge(v, g):
+    """Sums of g adjacent bins (the last may hold fewer)."""
+    return np.add.reduceat(np.asarray(v, float), np.arange(0, len(v), g))
+
+
+def profile_plots(out, p, res, runs, plt):
+    """profiles.png and particleVelocity.png: the wall-normal profiles
+    over the agglomeration stage (Eqs. 86, 88), folded about the centre
+    plane and plotted against the distance from the nearer wall; the
+    collision and agglomeration counts in bins merged until they hold
+    about EVENTS_PER_BIN collisions on average, with Poisson (counts) and
+    binomial (their ratio) standard errors."""
     d = p["delta"]
-    nu = float(read_dict(HERE / "constant/transportProperties")
-               ["nu"])
+    Lx, Ly, Lz = p["L"]
+    keys = sorted(res)
     fig, ax = plt.subplots(2, 3, figsize=(15, 8))
-    fig2, ax2 = plt.subplots(1, 2, figsize=(11, 4.5))
-    for k in keys:
+    fig2, ax2 = plt.subplots(1, 2, figsize=(12, 4.5))
+    merged = {}
+    for i, k in enumerate(keys):
         t = read_profiles(p, *runs[k])
         if t is None:
             continue
-        y = t["x"] / d - 1
-        lab = f"{k[0]} {k[1]}"
-        ax[0, 0].plot(y, t["nColPerVolume"], label=lab)
-        ax[0, 1].plot(y, t["nAggPerVolume"], label=lab)
-        ax[0, 2].plot(y, t["aggRate"], label=lab)
-        ut = res[k].get("uTau") or 0.0484
-        yp = np.minimum(t["x"], 2 * d - t["x"]) * ut / nu
-        ax[1, 0].semilogx(yp[y < 0], t["alpha"][y < 0], label=lab)
-        ax[1, 1].plot(y, t["meanD"] / d, label=lab)
-        ax[1, 2].plot(y, t["Ux"] / p["Ubar"], label=lab)
-        ax2[0].plot(y, np.sqrt(np.maximum(t["uu"], 0)) / p["Ubar"],
-                    label=f"{lab} u'")
-        ax2[0].plot(y, np.sqrt(np.maximum(t["vv"], 0)) / p["Ubar"], "--",
-                    label=f"{lab} v'")
-        ax2[1].plot(y, t["uv"] / p["Ubar"]**2, label=lab)
+        colour, lab = f"C{i}", f"{k[0]} {k[1]}"
+        nb = len(t["x"])
+        V = Lx * Lz * Ly / nb
+        ncol = fold(t["nColPerVolume"]) * 2 * V     # both halves' counts
+        nagg = fold(t["nAggPerVolume"]) * 2 * V
+        yw = 1 - fold(np.abs(t["x"] / d - 1))       # wall distance / delta
+        h = len(yw)
+        g = int(np.ceil(h / np.clip(ncol.sum() / EVENTS_PER_BIN, 1, h)))
+        merged[k] = g
+        edges = np.arange(0, h + g, g).clip(max=h) / h
+        yc = 0.5 * (edges[1:] + edges[:-1])
+        C, A = merge(ncol, g), merge(nagg, g)
+        Vb = 2 * V * merge(np.ones(h), g)
+        kw = dict(color=colour, label=lab, capsize=2, marker="o", ms=3)
+        ax[0, 0].errorbar(yc, C / Vb, yerr=np.sqrt(C) / Vb, **kw)
+        ax[0, 1].errorbar(yc, A / Vb, yerr=np.sqrt(A) / Vb, **kw)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            a = np.where(C > 0, A / C, np.nan)
+        sa = np.array([uncertainty.binomial_sigma(x, c) if c > 0 else np.nan
+                       for x, c in zip(A, C)])
+        ax[0, 2].errorbar(yc, a, yerr=np.where(C > 0, sa, np.nan), **kw)
+        dp = float(channel.read_settings(runs[k][0])["dParticle"])
+        ax[1, 0].plot(yw, fold(t["alpha"]), color=colour, label=lab)
+        ax[1, 1].plot(yw, fold(t["meanD"]) / dp - 1, color=colour,
+                      label=lab)
+        ax[1, 2].plot(yw, fold(t["Ux"]) / p["Ubar"], color=colour,
+                      label=lab)
+        ls = "-" if k[1] == "EAM" else ":"
+        ax2[0].plot(yw, np.sqrt(np.maximum(fold(t["uu"]), 0)) / p["Ubar"],
+                    ls, color=colour, label=f"{lab} u'")
+        ax2[0].plot(yw, np.sqrt(np.maximum(fold(t["vv"]), 0)) / p["Ubar"],
+                    ls, color=colour, alpha=0.5, label=f"{lab} v'")
+        # <u'v'> is odd about the centre plane: folded with its sign
+        uv = np.asarray(t["uv"], float)
+        ax2[1].plot(yw, 0.5 * (uv[:h] - uv[::-1][:h]) / p["Ubar"]**2, ls,
+                    color=colour, label=lab)
     for a, yl in zip(ax.flat, (
-            r"$\langle N_{col}\rangle$ per volume [m$^{-3}$]",
-            r"$\langle N_{agg}\rangle$ per volume [m$^{-3}$]",
-            r"$\langle N_{agg}\rangle/\langle N_{col}\rangle$ [-]",
-            "particle volume fraction [-]", r"mean diameter $/\delta$ [-]",
+            r"collisions per volume [m$^{-3}$]",
+            r"agglomerations per volume [m$^{-3}$]",
+            r"agglomerations / collisions [-]",
+            "particle volume fraction [-]",
+            r"mean diameter / $d_p$ $-$ 1 [-]",
             r"particle $\langle u\rangle/U_B$ [-]")):
         a.set_ylabel(yl)
-        a.set_xlabel(r"$y/\delta$ [-]")
+        a.set_xlabel(r"distance from the nearer wall $y_w/\delta$ [-]")
+        a.set_xlim(0, 1)
         a.grid(alpha=0.3)
-    ax[1, 0].set_xlabel(r"$y^+$ (lower half) [-]")
-    ax[1, 0].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax[1, 1].ticklabel_format(axis="y", style="sci", scilimits=(-2, 2),
+                              useOffset=False)
     ax[0, 0].legend(fontsize=8)
+    g = ", ".join(f"{k[0]} {k[1]} {v}" for k, v in merged.items())
     fig.suptitle(f"verticalChannel {p['name']}: wall-normal profiles over"
-                 " the agglomeration stage (Eqs. 86, 88)")
+                 " the agglomeration stage (Eqs. 86, 88), both halves"
+                 " folded\ntop: bins merged to about"
+                 f" {EVENTS_PER_BIN} collisions each (slabs per bin: {g});"
+                 " error bars one standard error (Poisson, binomial)")
     fig.tight_layout()
     fig.savefig(out / "profiles.png", dpi=110)
     plt.close(fig)
     ax2[0].set_ylabel(r"particle rms velocity $/U_B$ [-]")
-    ax2[1].set_ylabel(r"particle $\langle u'v'\rangle/U_B^2$ [-]")
+    ax2[1].set_ylabel(r"particle $\langle u'v'\rangle/U_B^2$ [-]"
+                      " (lower-wall sign)")
     for a in ax2:
-        a.set_xlabel(r"$y/\delta$ [-]")
+        a.set_xlabel(r"distance from the nearer wall $y_w/\delta$ [-]")
+        a.set_xlim(0, 1)
         a.grid(alpha=0.3)
-    ax2[0].legend(fontsize=7)
+        a.legend(fontsize=7)
+    fig2.suptitle(f"verticalChannel {p['name']}: particle velocity"
+                  " statistics (solid EAM, dotted MAM; the two clouds of"
+                  " a one-way configuration share the flow and start from"
+                  " the same particles,\nso their lines coincide until"
+                  " agglomerates differ)", fontsize=10)
     fig2.tight_layout()
     fig2.savefig(out / "particleVelocity.png", dpi=110)
     plt.close(fig2)

@@ -1,6 +1,6 @@
 """verticalChannel post-processing: frequencies by Eq. 87 of each run,
-then the Table D.6 regression (channelRegression.py), plots and the
-particle picture (channelPlots.py).
+then the Table D.6 regression (channelRegression.py), the report's text
+(channelReport.py), plots and the particle picture (channelPlots.py).
 
     channelPost.py PRESET [--reference]
         the report runs/PRESET/report: summary.json, regression.txt,
@@ -21,15 +21,15 @@ from pathlib import Path
 import numpy as np
 
 import channel
+import channelContacts as contacts
 from aggloTools.stats import read_stats
+from aggloTools.uncertainty import window_rate
 from channelMatrixPlot import matrix_figure
 from channelPlots import picture, plots  # noqa: F401 (channelPost.picture)
-from channelRegression import compare, regression, write_regression
+from channelRegression import regression
+from channelReport import compare, write_regression
 
 HERE = channel.HERE
-
-#: Sub-windows of the window whose rates give a rate's sigma
-N_BATCH = 10
 
 
 # ------------------------------------------------------------------ runs
@@ -53,20 +53,6 @@ def run_dirs(pname, base=None):
                 if m:
                     out[(cdir.name, m)] = (adir, m)
     return out
-
-
-def window_rate(t, n, w0, w1):
-    """Eq. 87 rate over [w0, w1] (T*) with its batch-means and Poisson
-    standard errors: (f, sigma_batch, sigma_poisson, events)."""
-    def at(x):
-        return float(np.interp(x, t, n))
-    dn = at(w1) - at(w0)
-    f = dn / (w1 - w0)
-    edges = np.linspace(w0, w1, N_BATCH + 1)
-    slopes = np.diff([at(e) for e in edges]) / np.diff(edges)
-    sb = float(np.std(slopes, ddof=1) / math.sqrt(N_BATCH))
-    sp = math.sqrt(max(dn, 1.0)) / (w1 - w0)
-    return f, sb, sp, dn
 
 
 def analyse_run(p, adir, cloud):
@@ -174,13 +160,17 @@ def post(pname, reference=False):
     res = {}
     for k, (adir, cloud) in runs.items():
         res[k] = analyse_run(p, adir, cloud)
+        res[k]["nProcs"] = int(channel.read_settings(adir)["nProcs"])
+        cd = contacts.contact_distributions(adir, cloud, p, *p["window"])
+        share, sigma = contacts.near_wall_share(cd)
+        res[k]["nearWallShare"], res[k]["nearWallSigma"] = share, sigma
         ut_k, G_k = u_tau(p, adir)
         if ut_k:
             res[k]["uTau"] = ut_k
             fluid[f"{k[0]} {adir.name}"] = {"uTauByUb": ut_k / p["Ubar"],
                                               "gradient": G_k}
     rows = regression(p, res)
-    nf = write_regression(out / "regression.txt", p, rows, fluid)
+    nf = write_regression(out / "regression.txt", p, rows, fluid, res)
     summary = {
         "preset": pname,
         "nParticles": p["nParticles"],
@@ -199,7 +189,7 @@ def post(pname, reference=False):
     print((out / "regression.txt").read_text())
     if not reference:
         text = compare(rows, channel.report_dir(pname, True)
-                       / "summary.json")
+                       / "summary.json", summary["runs"])
         (out / "comparison.txt").write_text(text + "\n")
         print(text.splitlines()[-1])
     return 1 if nf else 0

@@ -12,7 +12,9 @@ import numpy as np
 
 import channel
 import channelPost as post
-from aggloTools import eventlog, times
+from channelContacts import (QUANTILES, WALL_BINS,  # noqa: F401
+                             by_wall_distance, contact_distributions)
+from aggloTools import times, uncertainty
 from aggloTools.stats import read_stats, read_table
 
 HERE = channel.HERE
@@ -22,10 +24,6 @@ MODELS = ("EAM", "MAM")
 PAPER = {"f_col_scaled": channel.TABLE_D6["C1"]["fcol"],
          "f_agg_scaled": channel.TABLE_D6["C1"]["fagg"],
          "u_tau_over_U_B": 0.053}
-#: Quantiles reported of the distributions at contact
-QUANTILES = (0.1, 0.25, 0.5, 0.75, 0.9)
-#: Bins of the contacts' wall distance (y/delta; the last holds the centre)
-WALL_BINS = (0.0, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0)
 
 
 def paper_alpha(m):
@@ -50,61 +48,6 @@ def variant_history(v):
     if v["result"]:
         return v["result"].get("concentrationHistory") or []
     return (v.get("progress") or {}).get("history") or []
-
-
-def by_wall_distance(un, yw, agg, edges=WALL_BINS):
-    """The contacts per bin of wall distance yw (y/delta): how many, how
-    many agglomerated, their ratio (alpha of the bin; None where empty)
-    and the median normal approach speed (un in m/s; mm/s)."""
-    k = np.clip(np.searchsorted(edges, yw, side="right") - 1, 0,
-                len(edges) - 2)
-    out = {"edges": list(edges), "n": [], "nAgg": [], "alpha": [],
-           "unMedian_mm_s": []}
-    for b in range(len(edges) - 1):
-        s = k == b
-        n, na = int(s.sum()), int((s & agg).sum())
-        out["n"].append(n)
-        out["nAgg"].append(na)
-        out["alpha"].append(na / n if n else None)
-        out["unMedian_mm_s"].append(float(1e3 * np.median(un[s]))
-                                    if n else None)
-    return out
-
-
-def contact_distributions(adir, cloud, p, w0, w1):
-    """The collisions of the window (T*agg w0-w1) from the event log: the
-    normal approach speed |u_n| at contact and the wall distance of the
-    contact (in delta), each as quantiles, for all counted contacts and
-    for those that agglomerated, the first/repeat split, and both per bin
-    of wall distance (by_wall_distance)."""
-    try:
-        ev = eventlog.read_events(adir, cloud)
-    except FileNotFoundError:
-        return None
-    t0 = channel.end_time(p, "dispersion")
-    T = (ev["time"] - t0) / p["tScale"]
-    ev = ev[(T >= w0) & (T <= w1) & (ev["category"] < 2)]
-    if not len(ev):
-        return {"n": 0}
-    dx = ev["x2"] - ev["x1"]
-    n = dx / np.linalg.norm(dx, axis=1)[:, None]
-    un = np.abs(np.einsum("ij,ij->i", ev["U1"] - ev["U2"], n))
-    # the contact point's distance to the nearer wall (y in 0-2 delta)
-    yc = 0.5 * (ev["x1"][:, 1] + ev["x2"][:, 1])
-    yw = np.minimum(yc, 2 * p["delta"] - yc) / p["delta"]
-    agg = ev["agglomerates"] == 1
-
-    def q(a):
-        return ([float(v) for v in np.quantile(a, QUANTILES)]
-                if len(a) else None)
-    return {"n": int(len(ev)), "nFirst": int((ev["category"] == 0).sum()),
-            "nRepeat": int((ev["category"] == 1).sum()),
-            "nAgg": int(agg.sum()), "quantiles": list(QUANTILES),
-            "un_mm_s": q(1e3 * un), "un_mm_s_agg": q(1e3 * un[agg]),
-            "wallDistance_delta": q(yw),
-            "wallDistance_delta_agg": q(yw[agg]),
-            "byWallDistance": by_wall_distance(un, yw, agg),
-            "_un": un, "_yw": yw}
 
 
 def near_wall_over_centre(alpha):
@@ -232,7 +175,7 @@ def agglomeration_so_far(p, adir, last_Tstar):
     (last_Tstar: T* from the start of the unladen LES), per model whose
     stats.dat can be read: T*agg reached, the collisions and
     agglomerations by then and their ratio and, once the window has run
-    MIN_PART_TSTAR, Eq. 87 over its part so far (channelPost.window_rate,
+    MIN_PART_TSTAR, Eq. 87 over its part so far (uncertainty.window_rate,
     sigma the larger of batch means and Poisson as for a finished
     window), scaled by s^2, alpha_f and their factors to the paper. An
     interim: the rates of a part of the window, not the window's."""
@@ -259,8 +202,8 @@ def agglomeration_so_far(p, adir, last_Tstar):
                        if n["nCol"][-1] > 0 else None)}
         end = min(w1, T[-1])
         if end - w0 >= MIN_PART_TSTAR:
-            col = post.window_rate(T, n["nCol"], w0, end)
-            agg = post.window_rate(T, n["nAgg"], w0, end)
+            col = uncertainty.window_rate(T, n["nCol"], w0, end)
+            agg = uncertainty.window_rate(T, n["nAgg"], w0, end)
             alpha = agg[0] / col[0] if col[0] > 0 else None
             x.update({
                 "window": [w0, end],

@@ -25,9 +25,8 @@ not change it); beyond it the quantity depends on the shortcut. Per
 pair, the near-wall over centre concentration at the start of
 agglomeration of both runs (no sigma: the two values)."""
 
-import math
-
 import channelRegimeTrend as trend
+from aggloTools import uncertainty
 
 #: The checks: their pairs (variant, base), the heading of their lines
 #: in regime.txt and the words for a ratio beyond Z_CONSISTENT
@@ -78,7 +77,7 @@ def ratio(mv, mb, q):
     if not v or not b or not sv or not sb:
         return None
     r = v / b
-    s = r * math.hypot(sv / v, sb / b)
+    s = r * uncertainty.relative_error((v, sv), (b, sb))
     z = (r - 1.0) / s
     return {"ratio": r, "sigma": s, "z": z,
             "consistent": abs(z) <= Z_CONSISTENT}

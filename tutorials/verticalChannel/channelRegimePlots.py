@@ -5,6 +5,8 @@ release and dispersion between writes, the contacts' distributions and
 where along the wall distance they agglomerate, the ratios of the
 variants one shortcut apart and the grid trend against the paper."""
 
+import textwrap
+
 import numpy as np
 
 import channelRegimePairs as pairs
@@ -62,7 +64,7 @@ def plots(res, out):
             "concentration")
         if c:
             ax[2].plot(np.asarray(c["y"]) / 0.02, c["alpha"], "--",
-                       label=f"{v['name']} (running)")
+                       label=f"{v['name']} (not finished)")
     ax[2].set_xlabel(r"wall-normal position $y/\delta$ [-]")
     ax[2].set_ylabel("particle volume fraction [-]")
     ax[2].set_title("at the start of agglomeration (the dispersion's "
@@ -85,7 +87,7 @@ def plots(res, out):
                         where="pre", color=f"C{j}", marker=".",
                         ls="-" if v["result"] else "--",
                         label=v["name"] + ("" if v["result"]
-                                           else " (running)"))
+                                           else " (not finished)"))
         a_.set_xlabel(r"$T^*$ (release and dispersion) [-]")
         a_.set_ylabel(label)
         a_.set_title("between writes", fontsize=9)
@@ -103,10 +105,15 @@ def plots(res, out):
     _trend_panel(ax[8], res)
     _wall_bin_panels(ax[9], ax[10], done)
     _pairs_panel(ax[11], res)
-    for a_ in ax[2:]:
+    for a_ in (*ax[2:9], ax[11]):   # 9, 10: the figure's legend below
         if a_.get_legend_handles_labels()[0] and a_.get_legend() is None:
             a_.legend(fontsize=7)
-    fig.tight_layout()
+    head = textwrap.fill("Verdict: " + verdict.headline(res.get("verdict")),
+                         110)
+    fig.suptitle("The regime study: C1 of `small` with one shortcut"
+                 " changed per variant, against the paper (Table 3)\n"
+                 + head, fontsize=13, fontweight="bold")
+    fig.tight_layout(rect=(0, 0.05, 1, 0.955))
     fig.savefig(out / "regime.png", dpi=110)
     plt.close(fig)
 
@@ -199,9 +206,11 @@ def _trend_panel(ax, res):
 def _wall_bin_panels(ax_alpha, ax_rate, done):
     """Per finished variant and model, over the bins of wall distance
     (channelRegimeAnalysis.by_wall_distance): the ratio of agglomerating
-    to all contacts (bins without an agglomeration at the panel's floor,
+    to all contacts (bins without an agglomeration at the panel's foot,
     open) and the contacts per T* x s^2 of the window."""
-    floor = 1e-3
+    import matplotlib.transforms
+    foot = matplotlib.transforms.blended_transform_factory(
+        ax_alpha.transData, ax_alpha.transAxes)
     for i, v in enumerate(done):
         r = v["result"]
         for k, m in enumerate(MODELS):
@@ -217,8 +226,11 @@ def _wall_bin_panels(ax_alpha, ax_rate, done):
             lab = f"{v['name']} {m}"
             ax_alpha.plot(yc, np.where(a > 0, a, np.nan), mk + "-",
                           color=f"C{i}", lw=0.8, label=lab)
-            ax_alpha.plot(yc[a == 0], np.full((a == 0).sum(), floor), mk,
-                          mfc="white", color=f"C{i}")
+            # bins with contacts but no agglomeration: open markers at
+            # the panel's foot (a ratio of 0 has no place on a log axis)
+            ax_alpha.plot(yc[a == 0], np.full((a == 0).sum(), 0.03), mk,
+                          mfc="white", color=f"C{i}", transform=foot,
+                          clip_on=False)
             w0, w1 = r["window"]
             ax_rate.plot(yc, n / (w1 - w0) * r["scale_s2"], mk + "-",
                          color=f"C{i}", lw=0.8, label=lab)
@@ -234,13 +246,19 @@ def _wall_bin_panels(ax_alpha, ax_rate, done):
         a_.set_xticklabels([f"{t:g}" for t in ticks])
         a_.set_xticks([], minor=True)
         a_.set_xlabel(r"wall distance at contact $y/\delta$ [-] (bins)")
-    ax_alpha.set_ylim(0.5 * floor, 1.5)
-    ax_alpha.legend(fontsize=7, loc="lower right")
+    ax_alpha.set_ylim(top=1.5)
     ax_alpha.set_ylabel("agglomerating / all contacts [-]")
-    ax_alpha.set_title("the window's contacts by wall distance (open: "
-                       "none agglomerated)", fontsize=9)
+    ax_alpha.set_title("the window's contacts by wall distance (o EAM,"
+                       " s MAM; open at the foot:\ncontacts, none"
+                       " agglomerated; dashed: the paper's alpha_f)",
+                       fontsize=9)
     ax_rate.set_ylabel(r"contacts per T* $\times s^2$ in the bin [1/T*]")
     ax_rate.set_title("the window's contacts by wall distance", fontsize=9)
+    # one legend for both panels, under the figure, clear of the data
+    h, lab = ax_rate.get_legend_handles_labels()
+    ax_rate.figure.legend(h, lab, fontsize=8, ncol=7, loc="lower center",
+                          title="the window's contacts by wall distance"
+                          " (bottom left and middle panels)")
 
 
 def _pairs_panel(ax, res):

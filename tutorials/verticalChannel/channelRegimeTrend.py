@@ -16,9 +16,10 @@ a chi^2 at least as large on its degrees of freedom if the points lay on
 a power law with their sigmas; below 5 % the law is rejected, and the
 extrapolation says so."""
 
-import math
 
 import numpy as np
+
+from aggloTools import uncertainty
 
 #: The grid variants at the paper's phases and their cells per direction
 GRID_VARIANTS = (("regime32", 32), ("regime48", 48), ("regime64", 64))
@@ -28,58 +29,19 @@ N_PAPER_GRID = 128
 P_REJECT = 0.05
 
 
-def chi2_sf(x, k):
-    """P(chi^2_k >= x), the chi-square survival function for k >= 1
-    degrees of freedom: the regularised upper incomplete gamma Q(k/2,
-    x/2) in closed form (even k: exp(-x/2) sum_{i<k/2} (x/2)^i / i!; odd
-    k: erfc(sqrt(x/2)) plus exp(-x/2) sum_{i=1}^{(k-1)/2} (x/2)^(i-1/2) /
-    Gamma(i+1/2))."""
-    if k < 1 or int(k) != k:
-        raise ValueError(f"{k} degrees of freedom: a positive integer")
-    if x <= 0:
-        return 1.0
-    h = 0.5 * x
-    if k % 2 == 0:
-        return math.exp(-h) * sum(h**i / math.factorial(i)
-                                  for i in range(k // 2))
-    return math.erfc(math.sqrt(h)) + math.exp(-h) * sum(
-        h**(i - 0.5) / math.gamma(i + 0.5) for i in range(1, (k - 1) // 2 + 1))
-
-
 def power_law(n, v, sigma, at=N_PAPER_GRID):
-    """Weighted fit of ln v = a + b ln n: {"a", "b", "cov" (of a and b),
-    "sigmaB", "at", "value", "low", "high", "chi2", "dof", "p" (chi2's
-    probability, None without dof)}, or None with fewer than two usable
-    points (v > 0, sigma > 0)."""
-    n, v, s = (np.asarray(x, float) for x in (n, v, sigma))
-    ok = (v > 0) & (s > 0)
-    if ok.sum() < 2:
-        return None
-    x, y, w = np.log(n[ok]), np.log(v[ok]), (v[ok] / s[ok])**2
-    A = np.column_stack([np.ones_like(x), x])
-    cov = np.linalg.inv(A.T @ (w[:, None] * A))
-    a, b = cov @ (A.T @ (w * y))
-    dof = len(x) - 2
-    chi2 = float(np.sum(w * (y - a - b * x)**2))
-    if dof > 0:
-        cov = cov * max(1.0, chi2 / dof)
-    g = np.array([1.0, math.log(at)])
-    ln_v, se = a + b * g[1], math.sqrt(float(g @ cov @ g))
-    return {"a": float(a), "b": float(b), "cov": cov.tolist(),
-            "sigmaB": math.sqrt(float(cov[1, 1])),
-            "at": at, "value": math.exp(ln_v),
-            "low": math.exp(ln_v - se), "high": math.exp(ln_v + se),
-            "chi2": chi2, "dof": dof,
-            "p": chi2_sf(chi2, dof) if dof > 0 else None}
+    """The weighted power-law fit of aggloTools.uncertainty, at the
+    paper's grid by default."""
+    return uncertainty.power_law(n, v, sigma, at)
 
 
 def alpha_sigma(m):
     """The standard error of alpha_f = f_agg / f_col from theirs."""
     if not m["alpha_f"] or not m["f_agg_scaled"]:
         return None
-    return m["alpha_f"] * math.hypot(
-        m["sigma_agg_scaled"] / m["f_agg_scaled"],
-        m["sigma_col_scaled"] / m["f_col_scaled"])
+    return m["alpha_f"] * uncertainty.relative_error(
+        (m["f_agg_scaled"], m["sigma_agg_scaled"]),
+        (m["f_col_scaled"], m["sigma_col_scaled"]))
 
 
 def _finished_grids(res):

@@ -146,6 +146,23 @@ def printed_lines(pv):
     return out
 
 
+def headline(vd):
+    """The verdict in one line (regime.png's headline)."""
+    if not vd or not vd["variants"]:
+        return "no variant has finished"
+    if vd["preset"]:
+        return (f"the preset in the paper's regime (within a factor"
+                f" {vd['factor']:g} of Table 3's C1, C1 within"
+                f" {vd['budget_h']:g} h on 2 cores): {vd['preset']}")
+    by = {j["name"]: j for j in vd["variants"]}
+    c = by.get(vd["closest"])
+    close = (f"; closest: {c['name']} (worst factor {c['worst']:.3g},"
+             f" {c['worstAt']}; C1 {c['c1Hours2Cores']:.1f} h on 2 cores)"
+             if c else "")
+    return (f"no variant within a factor {vd['factor']:g} of Table 3's C1"
+            f" and within {vd['budget_h']:g} h on 2 cores" + close)
+
+
 def lines(vd, models):
     """The verdict's lines of regime.txt."""
     out = [f"Verdict (in the regime: both models' f_col x s^2 and alpha_f"

@@ -1,14 +1,14 @@
-"""verticalChannel: the Table D.6 regression of a preset's runs (the rows,
-their PASS / FAIL / n/r by the tolerances of doc/cases.md A.9), the
-report's text, and its comparison with the committed reference. The
-runs' values come from channelPost.analyse_run."""
+"""verticalChannel: the Table D.6 regression of a preset's runs: the rows,
+their PASS / FAIL / n/r by the tolerances of doc/cases.md A.9
+(channelReport.py writes them as the report's text). The runs' values
+come from channelPost.analyse_run."""
 
-import json
-import math
 
 import channel
 import channelStatements as statements
 from aggloTools import regression as reg
+from aggloTools import uncertainty as unc
+from aggloTools.uncertainty import ratio
 from channelStatements import PAPER_REGIME
 
 # AB16 Tab. D.6 (channel.py)
@@ -22,13 +22,6 @@ ABS_TOL = {"col": 0.15, "agg": 0.30}    # section 6, paper: Table D.6
 
 
 # ------------------------------------------------------------ regression
-
-def ratio(a, sa, b, sb):
-    if a <= 0 or b <= 0:
-        return None, None
-    r = a / b
-    return r, r * math.sqrt((sa / a)**2 + (sb / b)**2)
-
 
 def R(quantity, sim, sigma, paper, tolerance, status, note):
     """A regression row, with sim/paper where both are known."""
@@ -106,8 +99,8 @@ def regression(p, res):
                              "no published value: " + events))
         # alpha_f = f_agg/f_col (no scaling), with its propagated sigma
         a = r["alpha_f"]
-        sa = (a * math.hypot(r["sigma_col"] / r["f_col"],
-                             r["sigma_agg"] / r["f_agg"])
+        sa = (a * unc.relative_error((r["f_col"], r["sigma_col"]),
+                                     (r["f_agg"], r["sigma_agg"]))
               if a and r["f_agg"] > 0 else None)
         ref_a = (ref["fagg"][m] / ref["fcol"][m]) if ref else None
         if p["name"] == "paper" and ref_a is not None and a:
@@ -119,6 +112,13 @@ def regression(p, res):
             rows.append(R(f"{c} {m} alpha_f = f_agg/f_col", a, sa, ref_a,
                          None, reg.NR, "not gated at this preset"
                          if ref_a is not None else "no published value"))
+        ae, nc = r["alpha_end"], r["N_col_end"]
+        rows.append(R(f"{c} {m} alpha at the end = N_agg/N_col",
+                      ae, unc.binomial_sigma(ae * nc, nc)
+                      if ae is not None else None, None, None, reg.NR,
+                      "the paper's cumulative alpha at the end is not in"
+                      " doc/cases.md (Table D.6 gives rates): reported;"
+                      " sigma binomial"))
     # case ratios against the paper's
     for a, b, what in RATIOS:
         for m in models:
@@ -135,9 +135,9 @@ def regression(p, res):
             if ra["f_col"] > 0 and rb["f_col"] > 0 and ra["f_agg"] > 0 \
                     and rb["f_agg"] > 0:
                 r = ra["alpha_f"] / rb["alpha_f"]
-                s = r * math.sqrt(sum((ra[f"sigma_{q}"] / ra[f"f_{q}"])**2
-                                      + (rb[f"sigma_{q}"] / rb[f"f_{q}"])**2
-                                      for q in ("col", "agg")))
+                s = r * unc.relative_error(
+                    *((x[f"f_{q}"], x[f"sigma_{q}"])
+                      for q in ("col", "agg") for x in (ra, rb)))
             else:
                 r = s = None
             ref = ((pa["fagg"][m] / pa["fcol"][m])
@@ -191,128 +191,3 @@ def regression(p, res):
                      "mass, primaries, N_p = N - N_agg, counters"
                      " non-decreasing"))
     return rows
-
-
-def fmt(v):
-    return "-" if v is None else f"{v:.4g}"
-
-
-COLUMNS = [reg.Column("quantity", "quantity", 44),
-           reg.Column("sim", "sim", 11, ">", fmt),
-           reg.Column("sigma", "sigma", 11, ">", fmt),
-           reg.Column("paper", "paper", 11, ">", fmt),
-           reg.Column("sim/paper", "factor", 10, ">", fmt),
-           reg.Column("tolerance", "tolerance", 11, ">", fmt),
-           reg.Column("status", "status", 6),
-           reg.Column("note", "note", gap="  ")]
-
-
-#: What each preset resolves (README.md, "Presets"; the regime study)
-RESOLVES = {
-    "smoke": "nothing of the physics: it checks the stages, IO,"
-             " decomposition and conservation",
-    "small": "not the paper's regime: in every run so far C1 f_col x"
-             " s^2 10-25 times below Table 3 and alpha_f 20-50 times"
-             " above (sim/paper below), collisions in the bulk; only"
-             " conservation is judged, the rest is reported",
-    "medium": "the case ratios but the C4 agglomeration ratios (by the"
-              " counts' noise); whether it is in the paper's regime is the"
-              " regime study's question",
-    "paper": "everything (the paper's size)",
-    "regime64": "the paper's regime nearly: C1 f_col x s^2 0.61-0.62 of"
-                " Table 3, alpha_f 1.5-2.1 times (results/regime), the"
-                " collisions at the walls; the preset for comparisons with"
-                " the paper",
-}
-
-def report_head(p):
-    """The report's first lines: what the preset resolves, and the
-    preset for comparisons with the paper, its results and the command
-    (with its hours) that runs one configuration of it."""
-    what = RESOLVES.get(p["name"], "see the regime study (one shortcut of"
-                        " small changed)")
-    return [f"What preset {p['name']} resolves: {what}.",
-            f"For comparisons with the paper: preset {PAPER_REGIME} (the"
-            " regime study's closest variant, results/regime/regime.txt;"
-            f" its Table D.6 matrix: results/{PAPER_REGIME}/); one"
-            f" configuration: ./Allrun -preset {PAPER_REGIME} -configs C2"
-            " -np 1 (C1 took 14 CPU hours, a two-way configuration takes"
-            " about 17 by estimate, on one core of the development"
-            " machine).", ""]
-
-
-def write_regression(path, p, rows, fluid):
-    lines = report_head(p) + [
-             f"verticalChannel regression, preset {p['name']}:"
-             f" N = {p['nParticles']:g} per cloud, frequencies by Eq. 87"
-             f" over T*agg = {p['window'][0]:g}-{p['window'][1]:g},",
-             f"scaled to the paper by s^2 = (6e6/N)^2 ="
-             f" {(channel.N_PAPER / p['nParticles'])**2:g};"
-             " ratios pass if |sim - paper| <= max(3 sigma, 15 % paper)"
-             " (doc/cases.md A.9), sigma from batch means",
-             "(10 sub-windows) or Poisson, whichever is larger."
-             " Absolute scaled frequencies are gated only at `paper`.",
-             ""]
-    for k, v in fluid.items():
-        lines.append(f"fluid {k}: u_tau/U_B = {v['uTauByUb']:.4f}"
-                     f" (paper 0.053; nominal 0.0541),"
-                     f" mean gradient {v['gradient']:.4g} m/s2")
-    lines.append("")
-    lines += reg.table(rows, COLUMNS)
-    n = reg.counts(rows)
-    lines += ["", f"{n[reg.PASS]} PASS, {n[reg.FAIL]} FAIL,"
-              f" {n[reg.NR]} n/r (not resolved or"
-              " not gated at this preset, or no events: reported, the"
-              " reason in the note)"]
-    (path).write_text("\n".join(lines) + "\n")
-    return n[reg.FAIL]
-
-
-# ------------------------------------------------- against the reference
-
-def compare(rows, ref_file):
-    """The text comparing a report's regression rows with the committed
-    reference's: each value against the reference's with both sigmas
-    (z = difference / combined sigma; they agree within 3), and the
-    status then and now."""
-    if not ref_file.is_file():
-        return f"no committed reference {ref_file}"
-    ref = {r["quantity"]: r for r in json.loads(ref_file.read_text())
-           .get("regression", [])}
-    lines = [f"This report against the committed reference {ref_file}:",
-             f"{'check':<52} {'value':>10} {'sigma':>9} {'reference':>10}"
-             f" {'sigma':>9} {'z':>6}  agree  status (reference)"]
-
-    def val(x):
-        return f"{x:.4g}" if isinstance(x, (int, float)) else "-"
-
-    n = {"agree": 0, "differ": 0, "-": 0}
-    same = 0
-    for r in rows:
-        o = ref.get(r["quantity"])
-        if o is None:
-            lines.append(f"{r['quantity'][:52]:<52} {val(r['sim']):>10} "
-                         f"{val(r['sigma']):>9} {'-':>10} {'-':>9} {'-':>6}"
-                         f"  -      {r['status']} (not in the reference)")
-            n["-"] += 1
-            continue
-        same += o["status"] == r["status"]
-        z, verdict = None, "-"
-        if all(isinstance(x, (int, float)) for x in
-               (r["sim"], o["sim"])):
-            s = math.hypot(r["sigma"] or 0.0, o.get("sigma") or 0.0)
-            if s > 0:
-                z = (r["sim"] - o["sim"]) / s
-                verdict = "agree" if abs(z) <= 3 else "differ"
-            else:
-                verdict = "agree" if r["sim"] == o["sim"] else "differ"
-        n[verdict] += 1
-        lines.append(f"{r['quantity'][:52]:<52} {val(r['sim']):>10} "
-                     f"{val(r['sigma']):>9} {val(o['sim']):>10} "
-                     f"{val(o.get('sigma')):>9} {val(z):>6}  {verdict:<6} "
-                     f"{r['status']} ({o['status']})")
-    lines.append(f"{n['agree']} of {len(rows)} rows agree with the "
-                 f"reference within 3 combined sigma, {n['differ']} differ,"
-                 f" {n['-']} not comparable; {same} with the reference's "
-                 "status")
-    return "\n".join(lines)

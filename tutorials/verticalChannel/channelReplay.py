@@ -49,10 +49,15 @@ def replay(pname, runs_dir=None, reference=False):
         res = eventlog.portable(res, str(Path(*adir.parts[-4:])))
         summary["ensembles"][f"{c} {m}"] = res
         rows += eventlog.scan_rows(res, f"{c} {m}")
+        d6 = channel.TABLE_D6.get(c)
+        paper = [(d6["fagg"][k] / d6["fcol"][k], f"paper {c} {k}: alpha_f"
+                  " of Table D.6 (all contacts)") for k in MODELS] \
+            if d6 else None
         eventlog.plot_alpha_en(
             res, out / f"alphaReplay{c}{m}.png",
             f"verticalChannel {pname} {c}: the {res['events']} first "
-            f"contacts of cloud {m}, replayed", EN, MODELS)
+            f"contacts of cloud {m}, replayed", EN, MODELS,
+            reference=paper)
     (out / "replay.json").write_text(json.dumps(summary, indent=1) + "\n")
 
     text = eventlog.scan_table(

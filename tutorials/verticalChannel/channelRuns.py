@@ -2,10 +2,14 @@
 """verticalChannel: the paper's downward turbulent channel flow with
 four-way coupled 12/4 um quartz particles (doc/cases.md Part A).
 
-    ./Allrun [-preset paper|medium|small|smoke] [-configs "C1 C2 ..."]
+    ./Allrun [-preset NAME] [-configs "C1 C2 ..."]
              [-matrix] [-np N] [-post] [-every S] [-reference]
 
-  -preset   (default small) the presets file says what each keeps
+  -preset   (default small) a preset of the presets file: smoke (the
+            tests'), small, regime64 (the paper's regime: comparisons
+            with the paper), printed (the paper's printed resolution),
+            medium, paper, and the regime study's variants; README.md
+            says what each resolves, 'Run times' what each costs
   -configs  (default C1) configurations of the presets file:
             C1 C2 C3 C4 (Table D.6) R80 R60 (restitution variation)
   -matrix   all of them: C1 C2 C3 C4 R80 R60, EAM and MAM each
@@ -47,7 +51,7 @@ import sys
 import time
 from pathlib import Path
 
-from aggloTools import stages, times
+from aggloTools import runtimes, stages, times
 from aggloTools.runner import CommandError
 
 import channel
@@ -82,6 +86,7 @@ class Channel:
     def __init__(self, a):
         self.a = a
         self.base = Path("runs") / a.preset
+        self.whole = True   # every stage run from its start in this call
 
     def settings(self, d, config, stage, models=()):
         (d / "system" / "caseSettings").write_text(
@@ -100,6 +105,7 @@ class Channel:
         tag = f"{d} [{stage}{' ' + ' '.join(models) if models else ''}]"
         if (d / f"done.{stage}").is_file():
             print(f"    {tag}: finished before, kept", flush=True)
+            self.whole = False
             return
         self.settings(d, config, stage, models)
         if np > 1 and not stages.decomposed(d):
@@ -110,6 +116,8 @@ class Channel:
             times.set_aside_incomplete_times(d)
         for line in said.getvalue().splitlines():
             print(f"    {tag}: {line}", flush=True)
+        if len(times.time_dirs(d / "processor0" if np > 1 else d)) > 1:
+            self.whole = False      # continued from a write
         print(f"    {tag}: started ({time.strftime('%H:%M:%S')}, log: "
               f"{d}/log.aggloPimpleFoam)", flush=True)
         cmd = ["aggloPimpleFoam"]
@@ -132,6 +140,7 @@ class Channel:
         d = self.base / "unladen"
         if (d / "done.unladen").is_file():
             print("    unladen: finished before, kept", flush=True)
+            self.whole = False
             return
         if not (d / "constant" / "polyMesh").is_dir():
             stages.fresh_case(d, {"system": "system",
@@ -242,6 +251,8 @@ def work(a):
     except SystemExit as e:
         sys.stderr.write(f"{e}\n")
         return 1
+    start = time.monotonic()
+    run = None
     if not a.post:
         run = Channel(a)
         with stages.one_run(run.base, f"verticalChannel -preset {a.preset}"):
@@ -264,9 +275,19 @@ def work(a):
     if not (HERE / report / "regression.txt").is_file():
         sys.stderr.write(f"Allrun: no report written ({HERE / report})\n")
         return 1
-    print(f"Report: {HERE / report} (regression.txt, summary.json, *.png;"
-          f" comparison.txt: against the committed results/{a.preset})")
+    print(f"Report: {HERE / report}/regression.txt")
+    print("        (summary.json, the plots *.png and, for a run,"
+          " comparison.txt against the committed reference"
+          f" results/{a.preset}, beside it);")
+    print(f"cases and VTK files: {HERE / 'runs' / a.preset}/")
+    print(run_time(a, configs, run, time.monotonic() - start))
     return status
+
+
+def run_time(a, configs, run, seconds):
+    """This call's wall time beside README.md's for the same job."""
+    job = f"verticalChannel {a.preset} {' '.join(configs)} -np {a.np}"
+    return runtimes.line(job, seconds, run is not None and run.whole)
 
 
 if __name__ == "__main__":

@@ -47,7 +47,8 @@ def script(name):
     imports (all of them, so that any script can be asked for)."""
     for sibling in ("channel", "channelParticles", "channelPlots",
                     "channelMatrixPlot",
-                    "channelStatements", "channelRegression",
+                    "channelStatements", "channelContacts",
+                    "channelRegression", "channelReport",
                     "channelPost", "channelRegimeTrend", "channelRegimePairs",
                     "channelRegimeNeeds", "channelRegimeVerdict",
                     "channelRegimeAnalysis",

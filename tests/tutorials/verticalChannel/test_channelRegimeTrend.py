@@ -98,29 +98,6 @@ def test_grid_trend_of_the_study(trend):
     assert "regime32, regime64 finished" in text and "x paper 1.57" in text
 
 
-@pytest.mark.parametrize("x, k, p", [
-    (3.841459, 1, 0.05), (6.634897, 1, 0.01), (5.991465, 2, 0.05),
-    (7.814728, 3, 0.05), (9.487729, 4, 0.05), (11.070498, 5, 0.05)])
-def test_chi2_survival_at_tabulated_quantiles(trend, x, k, p):
-    """The chi-square table's upper quantiles (e.g. 3.841 at 1 dof for
-    5 %) give back their probabilities."""
-    assert trend.chi2_sf(x, k) == pytest.approx(p, rel=1e-5)
-
-
-def test_chi2_survival_against_the_normal_and_exponential(trend):
-    """1 dof: P(Z^2 >= x) = 2 P(Z >= sqrt x) for a standard normal Z;
-    2 dof: the exponential exp(-x/2); and P(chi^2 >= 0) = 1."""
-    for x in (0.1, 1.0, 4.0, 20.0):
-        z = math.sqrt(x)
-        assert trend.chi2_sf(x, 1) == pytest.approx(
-            1 + math.erf(-z / math.sqrt(2)), rel=1e-12)
-        assert trend.chi2_sf(x, 2) == pytest.approx(math.exp(-x / 2),
-                                                    rel=1e-12)
-    assert trend.chi2_sf(0.0, 3) == 1.0
-    with pytest.raises(ValueError):
-        trend.chi2_sf(1.0, 0)
-
-
 def test_three_points_off_the_law_are_rejected(trend):
     """Three grids whose middle point lies 5 sigma off the line through
     the outer two: chi^2 on 1 dof far beyond 3.84, p < 5 %, the lines

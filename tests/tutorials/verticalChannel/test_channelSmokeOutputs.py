@@ -104,7 +104,12 @@ def test_report_head_factors_and_comparison(smoke_runs):
     assert any(r["quantity"] == "C1 EAM alpha_f = f_agg/f_col"
                and r["paper"] == pytest.approx(6.67e2 / 8.14e4)
                for r in rows)
-    text = post.compare(rows, rep[1] / "summary.json")
+    runs2 = json.loads((rep[2] / "summary.json").read_text())["runs"]
+    text = post.compare(rows, rep[1] / "summary.json", runs2)
+    assert "This run: 2 ranks; the reference: serial." in \
+        text.splitlines()[1]
+    # the head's near-wall share is the event log's: every run has one
+    assert all(0 <= r["nearWallShare"] <= 1 for r in runs2.values())
     c1 = [line for line in text.splitlines()
           if line.startswith("C1 ") and " f_col x s^2" in line]
     assert len(c1) == 2 and all(" 0 " in line and "agree" in line

@@ -21,6 +21,7 @@ def run(c, m, col, agg, rel=0.01):
             "sigma_agg": rel * f_agg, "alpha_f": f_agg / f_col,
             "scale": S2, "f_col_scaled": col, "f_agg_scaled": agg,
             "events_col": 1e4, "events_agg": 1e3, "massRelErr": 0.0,
+            "N_col_end": 2e4, "alpha_end": agg / col,
             "primariesConstant": True, "countersNonDecreasing": True,
             "NpBalance": True}
 

@@ -257,9 +257,10 @@ def en_variants(ens, models=("EAM", "MAM")):
 
 def plot_alpha_en(results, path, title, ens, models=("EAM", "MAM"),
                   reference=None):
-    """alpha against e_n per model with the 95 % intervals, from the
-    replay results of en_variants (one log: the same collisions);
-    reference: (value, label) of a horizontal line (a theory)."""
+    """alpha against e_n per model with the 95 % Wilson intervals of the
+    replay (hardSphereReplay), from the replay results of en_variants
+    (one log: the same collisions); reference: (value, label) of a
+    horizontal line (a theory, the paper's value), or a list of them."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -276,10 +277,14 @@ def plot_alpha_en(results, path, title, ens, models=("EAM", "MAM"),
         err = [np.clip(a - lo, 0, None), np.clip(hi - a, 0, None)]
         ax.errorbar(x, a, yerr=err, marker="os"[k % 2], capsize=4,
                     label=m)
-    if reference:
-        ax.axhline(reference[0], color="0.4", ls="--", label=reference[1])
+    refs = [reference] if reference and not isinstance(
+        reference[0], (list, tuple)) else (reference or [])
+    for j, (value, label) in enumerate(refs):
+        ax.axhline(value, color=f"C{j}" if len(refs) > 1 else "0.4",
+                   ls="--", lw=1, label=label)
     ax.set_xlabel("restitution coefficient $e_n$")
-    ax.set_ylabel(r"$\alpha = N_{agg}/N_{col}$")
+    ax.set_ylabel(r"$\alpha = N_{agg}/N_{col}$ (bars: 95 % Wilson"
+                  " interval)")
     ax.set_title(title, fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=9)
