@@ -111,4 +111,22 @@ Foam::scalar Foam::hardSphereInput::getInRange
 }
 
 
+Foam::label Foam::hardSphereInput::getSeed
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const label seed = dict.getOrDefault<label>(key, 0, keyType::LITERAL);
+    if (seed < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' of " << dict.name() << " is " << seed
+            << nl << "    The seed of the keyed random numbers is an"
+            << " integer in [0, " << labelMax << "]" << exit(FatalIOError);
+    }
+    return seed;
+}
+
+
 // ************************************************************************* //

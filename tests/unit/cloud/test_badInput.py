@@ -168,6 +168,17 @@ CASES = {
                             " stressThresholdCoeffs { "
                             + BRK.replace("mode erosion;", FRAG)
                             + " eventLog maybe; }", "maybe"),
+    # a mechanism named twice, negative seeds of the keyed random numbers
+    "breakupMechanismTwice": (ROT, ROT + " breakupModel stressThreshold;"
+                              " stressThresholdCoeffs { "
+                              + BRK.replace("(rotation)",
+                                            "(rotation rotation)")
+                              + " }", "named twice"),
+    "breakupSeedNegative": (ROT, ROT + " breakupModel stressThreshold;"
+                            " stressThresholdCoeffs { "
+                            + BRK.replace("mode erosion;", FRAG)
+                            + " randomSeed -3; }", "randomSeed"),
+    "wallSeedNegative": (EAM, EAM + " randomSeed -3;", "randomSeed"),
     "couplingScaleZero": (SOL, SOL + " couplingScale 0;", "couplingScale"),
     "couplingScaleNegative": (SOL, SOL + " couplingScale -6;",
                               "couplingScale"),
@@ -197,6 +208,9 @@ SUBMODEL_CASES = {
     "PozorskiApteCk": ("dispersionModel none;", "dispersionModel "
                        "PozorskiApte; PozorskiApteCoeffs { kSgsSource nut;"
                        " Ck -1; wallReflection true; }", "Ck"),
+    "PozorskiApteSeed": ("dispersionModel none;", "dispersionModel "
+                         "PozorskiApte; PozorskiApteCoeffs { kSgsSource nut;"
+                         " wallReflection true; seed -3; }", "seed"),
 }
 
 

@@ -28,6 +28,7 @@ License
 #include "breakupKernel.H"
 #include "hardSphereCollisionKernel.H"
 #include "keyedRandom.H"
+#include "hardSphereInput.H"
 #include "randomStreams.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -55,7 +56,7 @@ Foam::breakupKernel::breakupKernel
       ? breakupRate(coeffs.subDict("rate"))
       : breakupRate()
     ),
-    randomSeed_(coeffs.getOrDefault<label>("randomSeed", 0))
+    randomSeed_(hardSphereInput::getSeed(coeffs))
 {}
 
 

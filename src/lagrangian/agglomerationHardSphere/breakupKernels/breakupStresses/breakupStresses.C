@@ -68,6 +68,15 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
     }
     for (const word& name : names)
     {
+        if (names.found(name) && names.find(name) != names.rfind(name))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Mechanism '" << name << "' named twice in entry"
+                << " 'mechanisms' of " << dict.name() << nl
+                << "    Name each mechanism once: "
+                << flatOutput(mechanismTypeNames.names())
+                << exit(FatalIOError);
+        }
         if (!mechanismTypeNames.found(name))
         {
             FatalIOErrorInFunction(dict)

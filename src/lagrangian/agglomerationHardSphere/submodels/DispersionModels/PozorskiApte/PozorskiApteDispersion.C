@@ -61,7 +61,7 @@ Foam::PozorskiApteDispersion<CloudType>::PozorskiApteDispersion
     Ck_(this->coeffDict().template getOrDefault<scalar>("Ck", 0.094)),
     CT_(this->coeffDict().template getOrDefault<scalar>("CT", 1)),
     betaC_(this->coeffDict().template getOrDefault<scalar>("betaC", 1)),
-    seed_(this->coeffDict().template getOrDefault<label>("seed", 0)),
+    seed_(hardSphereInput::getSeed(this->coeffDict(), "seed")),
     wallReflection_(this->coeffDict().template get<bool>("wallReflection")),
     sigmaPtr_(nullptr),
     deltaPtr_(nullptr)

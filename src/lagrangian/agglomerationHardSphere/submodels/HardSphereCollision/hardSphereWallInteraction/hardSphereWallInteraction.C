@@ -28,6 +28,7 @@ License
 #include "hardSphereWallInteraction.H"
 #include "wallPolyPatch.H"
 #include "particleKeyedModel.H"
+#include "hardSphereInput.H"
 #include "randomStreams.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -91,7 +92,7 @@ Foam::hardSphereWallInteraction::hardSphereWallInteraction
     (
         correctionNames.getOrDefault("wallPositionCorrection", dict, REFLECT)
     ),
-    randomSeed_(dict.getOrDefault<label>("randomSeed", 0)),
+    randomSeed_(hardSphereInput::getSeed(dict)),
     reflectSGS_(keyedDispersion && keyedDispersion->reflectAtWalls())
 {
     // One wall model per wall patch
