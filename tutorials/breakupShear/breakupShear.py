@@ -126,8 +126,9 @@ def run_one(case, series, gamma, p, every=60):
         said = io.StringIO()
         with contextlib.redirect_stdout(said):
             times.set_aside_incomplete_times(case)
-        for line in said.getvalue().splitlines():
-            print(f"{tag}: {line}", flush=True)
+        # (not `line`: that name is the progress line below)
+        for text in said.getvalue().splitlines():
+            print(f"{tag}: {text}", flush=True)
         print(f"{tag}: continuing from the last written time", flush=True)
         append = True
 

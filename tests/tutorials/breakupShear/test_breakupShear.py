@@ -64,11 +64,13 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
     PASS (the largest agglomerate at or below the criterion's size once
     erosion stopped, primaries conserved) and break-ups happened; then the
     same report judged against a prediction one primary smaller fails
-    with exit status 1."""
+    with exit status 1. Progress lines every second: a fresh run printed
+    none before its progress line's name was shadowed (NameError)."""
     tut = tmp_path / "breakupShear"
     shutil.copytree(TUT, tut, ignore=shutil.ignore_patterns(
         "runs", "results", "__pycache__"))
-    res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
+    res = subprocess.run(["./Allrun", "-preset", "ci", "-every", "1"],
+                         cwd=tut,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True, timeout=600)
     assert res.returncode == 0, res.stdout[-3000:]

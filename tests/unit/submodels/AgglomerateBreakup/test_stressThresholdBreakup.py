@@ -17,8 +17,8 @@ from aggloTools import boxcase
 from aggloTools.cloud import read_cloud, read_record
 from aggloTools.stats import read_stats
 from aggloTools.times import last_time
-from breakupCases import (BREAKUP, DP, GAP, by_id, kernel, omega_crit,
-                          size_density, state, totals)
+from breakupCases import (BREAKUP, DP, GAP, RHO_P, by_id, kernel,
+                          omega_crit, size_density, state, totals)
 
 
 NS = (2, 3, 4, 10, 1000)
@@ -117,6 +117,35 @@ def test_critical_spin_erodes_one_primary(case_dir, foam_env, structure):
     log = (case_dir / "log.aggloPimpleFoam").read_text()
     assert re.search(r"Break-up: 5 events \(turbulence 0, drag 0, "
                      r"rotation 5, wallImpact 0\)", log), log[-2000:]
+
+
+def test_hit_agglomerate_checked_in_the_same_step(case_dir, foam_env):
+    """An overloaded agglomerate (N = 10 at 1.5 omega_crit) hit by a
+    primary breaks in the step of the collision, checked in the state the
+    collision left (doc/breakup.md 4.1): the primary comes along the spin
+    axis, so the contact point does not move tangentially and the spin is
+    unchanged. Before, an agglomerate that collided was skipped in that
+    step (it broke a step late; one hit every step never broke)."""
+    n, structure = 10, "CSM"
+    da, rho = size_density(n, structure)
+    X = np.array([1e-3, 0.5e-3, 0.5e-3])
+    gap = 0.01 * DP
+    parts = [dict(x=tuple(X), U=(0, 0, 0), d=da, rho=rho, nPrimary=n,
+                  omega=(0, 0, 1.5 * omega_crit(n, structure))),
+             dict(x=tuple(X + [0, 0, 0.5 * (da + DP) + gap]),
+                  U=(0, 0, -2.0), d=DP, rho=RHO_P, nPrimary=1,
+                  omega=(0, 0, 0))]
+    boxcase.box_case(case_dir, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
+                     particles=parts, dt=1e-7, end_time=1e-7,
+                     hard_sphere=kernel(structure=structure),
+                     breakup=BREAKUP)
+    boxcase.run_case(case_dir)
+    stats = read_stats(case_dir)
+    assert stats["nCol"][0] == 1              # the hit, in the first step
+    assert stats["nAgg"][0] == 0              # a rebound at 2 m/s
+    assert stats["nBreakupRotation"][0] == 1  # and the break-up with it
+    c1, _, _ = state(case_dir, last_time(case_dir))
+    assert sorted(c1["nPrimary"]) == [1, 1, n - 1]
 
 
 def boundary_case(case, decompose=(1, 1, 1), steps=2, write=None):

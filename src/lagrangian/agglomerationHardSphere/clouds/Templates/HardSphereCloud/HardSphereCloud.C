@@ -333,7 +333,7 @@ void Foam::HardSphereCloud<CloudType>::motion
             }
         }
 
-        // Break-up of the agglomerates that neither collided nor formed
+        // Break-up of the agglomerates, in the state the collisions left
         breakupModel_->breakup(td);
 
         // Tracked moves: agglomerates to the centre of mass, particles out

@@ -218,8 +218,11 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     const volScalarField& rho = cloud.rho();
     const volScalarField& mu = cloud.mu();
 
-    // The agglomerates that break, checked once each: those that ended the
-    // step where they were tracked to (no event, no relocation)
+    // The agglomerates that break, checked once each after the step's
+    // collisions and agglomerations (doc/breakup.md 4.1: the state a
+    // collision or an agglomeration left, at the end position of the
+    // stage or the target of its relocation); the partners merged into
+    // an agglomerate are gone
     const Time& runTime = cloud.db().time();
     DynamicList<parcelType*> parents;
     DynamicList<breakupEvent> events;
@@ -234,8 +237,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             !agglomerates
          || p.nPrimary() < 2
          || !(st.positionKnown() || st.relocating())
-         || st.collided()
-         || st.formed()
+         || st.removed()
         )
         {
             continue;
