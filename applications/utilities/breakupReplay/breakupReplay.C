@@ -30,16 +30,17 @@ Group
     grpLagrangianUtilities
 
 Description
-    Replays the break-up event log of a run (stressThresholdCoeffs:
-    eventLog true; doc/eventLog.md) through the break-up kernel of the run
-    and of variants: the same parents under the same loads, any strength,
-    stresses, fragmentation or rate coefficients, without running the flow
+    Replays the break-up event log of a run (<model>Coeffs: eventLog
+    true; doc/eventLog.md) through the break-up model of the run (any
+    model of the family breakupKernel: the log's header names it, its
+    mechanisms and its values) and of variants: the same parents under the
+    same loads, any of the model's coefficients, without running the flow
     again. Prints a table and writes JSON: per configuration the logged
     break-ups that still break, by mechanism, those deferred by a
     stochastic rate, those whose mechanism changes, and those whose
     fragments are the logged ones bit for bit.
 
-    The run's own configuration (the cloud's stressThresholdCoeffs and the
+    The run's own configuration (the cloud's <model>Coeffs and the
     material and structure of its hardSphereCoeffs) must reproduce every
     logged break-up (-check: exit 1 on any difference). A variants
     dictionary (-variants) names configurations that change the run's
@@ -47,7 +48,13 @@ Description
     \verbatim
     weaker   { strength { rumpfPrefactor 0.5; } }
     binary   { fragmentation { mode binary; } }
+    noDrag   { stresses { mechanisms (turbulence rotation); }
+               remove (stresses.Cd); }
     \endverbatim
+    (remove: the run's entries to drop first, so that a mode or a
+    mechanism whose entries are accepted only while it is on can be
+    switched off, e.g. remove (fragmentation.betaAlpha); for beta to
+    binary).
 
     The log holds the agglomerates that broke: a replay tells which of
     them a variant would also break, not which of the others it would
@@ -84,32 +91,10 @@ using namespace Foam;
 #include "replayOutput.H"
 #include "replayLogCount.H"
 #include "replayVariants.H"
+#include "breakupReplayReport.H"
 
 namespace
 {
-
-//- What one configuration does with the logged break-ups
-struct breakupReplayResult
-{
-    word name;
-    label breaks = 0, deferred = 0, mechanismChanged = 0, reproduced = 0;
-    labelList byMechanism;
-};
-
-
-//- The labels as a JSON list
-std::string json(const labelUList& l)
-{
-    std::ostringstream os;
-    os  << '[';
-    forAll(l, i)
-    {
-        os  << (i ? ", " : "") << l[i];
-    }
-    os  << ']';
-    return os.str();
-}
-
 
 //- True if the states are equal bit for bit
 bool same(const hardSphereState& a, const hardSphereState& b)
@@ -120,28 +105,42 @@ bool same(const hardSphereState& a, const hardSphereState& b)
 }
 
 
-//- Replay the events through the kernel of the coefficients
+//- Replay the events through the model of the coefficients
 breakupReplayResult replay
 (
     const word& name,
+    const word& model,
     const dictionary& coeffs,
     const hardSphereCollisionKernel& collision,
-    const UList<breakupEvent>& events
+    const UList<breakupEvent>& events,
+    const List<wordList>& logged
 )
 {
-    const breakupKernel kernel(coeffs, collision);
+    const autoPtr<breakupKernel> kernel
+    (
+        breakupKernel::New(model, coeffs, collision)
+    );
+    if (kernel->mechanisms() != logged[0] || kernel->fields() != logged[2])
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Configuration " << name << ": the break-up model " << model
+            << " of this build has the mechanisms " << kernel->mechanisms()
+            << " and the values " << kernel->fields() << "; the log names "
+            << logged[0] << " and " << logged[2] << exit(FatalIOError);
+    }
     breakupReplayResult r;
     r.name = name;
-    r.byMechanism.setSize(breakupStresses::mechanismTypeNames.size(), 0);
+    r.byMechanism.setSize(logged[0].size(), 0);
     for (const breakupEvent& e : events)
     {
-        const breakupCriterion::verdict v = kernel.check(e.parent, e.load);
         const breakupKernel::key k{e.proc, e.id, e.timeIndex};
-        if (!v.breaks())
+        const breakupKernel::verdict v =
+            kernel->check(e.parent, e.load, e.dt, k);
+        if (v.mechanism < 0)
         {
             continue;
         }
-        if (kernel.deferred(v, e.load, e.parent.d, e.dt, k))
+        if (v.deferred)
         {
             ++r.deferred;
             continue;
@@ -154,8 +153,8 @@ breakupReplayResult replay
             continue;
         }
         const agglomerateFragmentation::fragments f =
-            kernel.split(e.parent, v, e.S, k);
-        if (v.ratio == e.ratio && same(f.a, e.a) && same(f.b, e.b))
+            kernel->split(e.parent, v, e.S, k);
+        if (v.values == e.values && same(f.a, e.a) && same(f.b, e.b))
         {
             ++r.reproduced;
         }
@@ -187,7 +186,7 @@ int main(int argc, char *argv[])
     argList::addOption
     (
         "variants", "file", "configurations that change the run's"
-        " stressThresholdCoeffs"
+        " <model>Coeffs"
     );
 
     #include "setRootCase.H"
@@ -221,23 +220,37 @@ int main(int argc, char *argv[])
     {
         FatalErrorInFunction
             << "No break-up event log in " << dir << nl << "(run the case"
-            << " with eventLog true; in stressThresholdCoeffs)"
+            << " with eventLog true; in the break-up model's coefficients)"
             << exit(FatalError);
     }
     checkTarget("json", jsonOut, dir, logs);
 
-    const wordList mechanisms(breakupStresses::mechanismTypeNames.names());
+    // The header of every file: the same model, mechanisms and values
+    List<wordList> names;
     DynamicList<breakupEvent> events;
     for (const fileName& f : logs)
     {
-        wordList names;
-        events.append(eventFile<breakupEvent>::read(dir/f, names));
-        if (names != mechanisms)
+        List<wordList> inFile;
+        events.append(eventFile<breakupEvent>::read(dir/f, inFile));
+        if (names.empty())
+        {
+            names = inFile;
+        }
+        else if (inFile != names)
         {
             FatalErrorInFunction
-                << "The log " << dir/f << " names the mechanisms " << names
-                << "; this build has " << mechanisms << exit(FatalError);
+                << "The log " << dir/f << " names " << inFile << "; the"
+                << " first log names " << names << ": logs of different"
+                << " models" << exit(FatalError);
         }
+    }
+    const wordList& mechanisms = names[0];
+    const word model(names[1].size() == 1 ? names[1][0] : word::null);
+    if (model.empty())
+    {
+        FatalErrorInFunction
+            << "The log's header names the model " << names[1]
+            << " (one name)" << exit(FatalError);
     }
     checkLogCount(runTime, cloudName, "breakupEventLog", dir, events.size());
     std::stable_sort
@@ -272,93 +285,52 @@ int main(int argc, char *argv[])
         }
     }
     const hardSphereCollisionKernel collision(kernelDict);
-    const dictionary& runCoeffs = subModels.subDict("stressThresholdCoeffs");
+    const dictionary& runCoeffs = subModels.subDict(model + "Coeffs");
 
     List<breakupReplayResult> results;
-    results.append(replay("run", runCoeffs, collision, events));
+    results.append
+    (
+        replay("run", model, runCoeffs, collision, events, names)
+    );
     if (args.found("variants"))
     {
         const dictionary variants
         (
             readVariants(args.get<fileName>("variants").expand())
         );
-        wordList valid(breakupKernel::keys());
-        valid.append("eventLog");
         for (const entry& v : variants)
         {
             if (!v.isDict() || v.keyword() == "run")
             {
                 FatalIOErrorInFunction(variants)
                     << "Variant " << v.keyword() << " must be a dictionary"
-                    << " of stressThresholdCoeffs entries, not named run"
+                    << " of " << model << "Coeffs entries, not named run"
                     << exit(FatalIOError);
             }
-            hardSphereInput::checkKeys(v.dict(), valid);
-            dictionary coeffs(runCoeffs);
-            coeffs.merge(v.dict());
-            nameAfterVariant(coeffs, variants.name()/v.keyword());
-            results.append(replay(v.keyword(), coeffs, collision, events));
+            const dictionary coeffs
+            (
+                applyVariant
+                (
+                    runCoeffs, v.dict(), variants.name()/v.keyword()
+                )
+            );
+            results.append
+            (
+                replay(v.keyword(), model, coeffs, collision, events, names)
+            );
         }
     }
 
-    // Table
-    labelList logged(mechanisms.size(), Zero);
-    for (const breakupEvent& e : events)
-    {
-        ++logged[e.mechanism];
-    }
-    Info<< nl << "breakupReplay: " << events.size() << " break-ups of "
-        << logs.size() << " log file(s) in " << dir << nl << "logged:";
-    forAll(mechanisms, m)
-    {
-        Info<< ' ' << mechanisms[m] << ' ' << logged[m];
-    }
-    Info<< nl << nl;
-    {
-        std::ostringstream os;
-        os  << std::setw(16) << "configuration" << std::setw(9) << "breaks";
-        for (const word& m : mechanisms)
-        {
-            os  << std::setw(12) << m;
-        }
-        os  << std::setw(10) << "deferred" << std::setw(18)
-            << "other mechanism" << std::setw(12) << "reproduced";
-        Info<< os.str().c_str() << nl;
-    }
-    OStringStream js;
-    js  << "{\n  \"case\": \"" << args.path().c_str() << "\",\n"
-        << "  \"cloud\": \"" << cloudName.c_str() << "\",\n"
-        << "  \"logFiles\": " << logs.size() << ",\n"
-        << "  \"events\": " << events.size() << ",\n"
-        << "  \"mechanisms\": [";
-    forAll(mechanisms, m)
-    {
-        js  << (m ? ", " : "") << '"' << mechanisms[m].c_str() << '"';
-    }
-    js  << "],\n  \"logged\": " << json(logged).c_str()
-        << ",\n  \"configurations\": [";
-    forAll(results, i)
-    {
-        const breakupReplayResult& r = results[i];
-        std::ostringstream os;
-        os  << std::setw(16) << r.name << std::setw(9) << r.breaks;
-        for (const label n : r.byMechanism)
-        {
-            os  << std::setw(12) << n;
-        }
-        os  << std::setw(10) << r.deferred << std::setw(18)
-            << r.mechanismChanged << std::setw(12) << r.reproduced;
-        Info<< os.str().c_str() << nl;
-
-        js  << (i ? "," : "") << "\n    {\"name\": \"" << r.name.c_str()
-            << "\", \"breaks\": " << r.breaks << ", \"byMechanism\": "
-            << json(r.byMechanism).c_str()
-            << ", \"deferred\": " << r.deferred
-            << ", \"mechanismChanged\": " << r.mechanismChanged
-            << ", \"reproduced\": " << r.reproduced << "}";
-    }
-    js  << "\n  ]\n}\n";
-    writeAtomically(jsonOut, js.str());
+    // Table and JSON
+    const std::string js
+    (
+        replayReport
+        (
+            args.path(), cloudName, dir, logs.size(), events, model,
+            mechanisms, results
+        )
+    );
+    writeAtomically(jsonOut, js);
     Info<< nl << "Written " << jsonOut << nl;
 
     const label bad = events.size() - results[0].reproduced;

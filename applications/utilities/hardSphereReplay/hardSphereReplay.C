@@ -285,9 +285,10 @@ int main(int argc, char *argv[])
                         << " dictionary of kernel entries"
                         << exit(FatalIOError);
                 }
-                dictionary kd(runKernel);
-                kd.merge(v.dict());
-                nameAfterVariant(kd, f/v.keyword());
+                dictionary kd
+                (
+                    applyVariant(runKernel, v.dict(), f/v.keyword())
+                );
 
                 // Another model: the run model's coefficients do not apply
                 // (unknown entries of the other model)

@@ -167,9 +167,9 @@ TEST(BinaryCollision, T14NoCohesionAtEn1)
     // dE_vdW(e_n = 1) = 0 exactly (AB16 remark after Eq. 37)
     EXPECT_EQ
     (
-        agglomerationModels::EAM::vanDerWaalsEnergy
+        mat.vanDerWaalsEnergy
         (
-            mat, 1, 12e-6, 2200, 12e-6, 2200, 1e-3
+            1, 12e-6, 2200, 12e-6, 2200, 1e-3
         ),
         0
     );

@@ -159,26 +159,25 @@ TEST(Invariants, T20ScalingLaws)
 {
     const hardSphereMaterial mat(6.3e-20, 7.2e10, 0.17, 1.612985e9, 2e-10,
         2200);
-    typedef agglomerationModels::EAM EAM;
 
     // dE ~ d^2 rho^0.5 v^1 (equal spheres)
     const scalar f = 1.1;
-    const scalar dE0 = EAM::vanDerWaalsEnergy(mat, 0.97, 12e-6, 2200, 12e-6,
+    const scalar dE0 = mat.vanDerWaalsEnergy(0.97, 12e-6, 2200, 12e-6,
         2200, 1e-3);
-    const scalar sd = std::log(EAM::vanDerWaalsEnergy(mat, 0.97, f*12e-6,
+    const scalar sd = std::log(mat.vanDerWaalsEnergy(0.97, f*12e-6,
         2200, f*12e-6, 2200, 1e-3)/dE0)/std::log(f);
-    const scalar sr = std::log(EAM::vanDerWaalsEnergy(mat, 0.97, 12e-6,
+    const scalar sr = std::log(mat.vanDerWaalsEnergy(0.97, 12e-6,
         f*2200, 12e-6, f*2200, 1e-3)/dE0)/std::log(f);
-    const scalar sv = std::log(EAM::vanDerWaalsEnergy(mat, 0.97, 12e-6,
+    const scalar sv = std::log(mat.vanDerWaalsEnergy(0.97, 12e-6,
         2200, 12e-6, 2200, f*1e-3)/dE0)/std::log(f);
     EXPECT_TRUE(near(sd, 2.0, 0, 1e-3));
     EXPECT_TRUE(near(sr, 0.5, 0, 1e-3));
     EXPECT_TRUE(near(sv, 1.0, 0, 1e-3));
 
     // dE(e)/dE(0.97)
-    EXPECT_TRUE(near(EAM::vanDerWaalsEnergy(mat, 0.80, 12e-6, 2200, 12e-6,
+    EXPECT_TRUE(near(mat.vanDerWaalsEnergy(0.80, 12e-6, 2200, 12e-6,
         2200, 1e-3)/dE0, 2.4681, 1e-4));
-    EXPECT_TRUE(near(EAM::vanDerWaalsEnergy(mat, 0.60, 12e-6, 2200, 12e-6,
+    EXPECT_TRUE(near(mat.vanDerWaalsEnergy(0.60, 12e-6, 2200, 12e-6,
         2200, 1e-3)/dE0, 3.2908, 1e-4));
 
     // f*_nc ~ d^-1 rho^-0.6 v^-0.2 (Eq. 89)

@@ -83,6 +83,15 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     case = shear_case(case_dir / "run")
     boxcase.run_case(case)
     ev = breakuplog.read_breakup_events(case)
+    head = breakuplog.header(case)
+    ratio = breakuplog.values(ev, head)["ratio"]
+
+    # The header names the model, its mechanisms and its values
+    assert head == {"mechanisms": ("turbulence", "drag", "rotation",
+                                   "wallImpact"),
+                    "model": ("stressThreshold",),
+                    "fields": ("ratio", "sigmaT")}
+    assert np.all(ev["values"][:, 2:] == 0)
 
     # The log holds the counted break-ups, by mechanism, over several steps
     last = stats_rows(case)[-1]                     # counts since start
@@ -106,7 +115,7 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
                   <= 1e-12 * scale)
     assert np.all(ev["newProc"] == -2)
     assert len(np.unique(ev["newId"])) == len(ev)
-    assert np.all(ev["ratio"] > 1)
+    assert np.all(ratio > 1)
 
     # The run's kernel reproduces every logged break-up; a variant whose
     # stresses are all halved breaks exactly those with stress/strength
@@ -121,8 +130,35 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     assert run_["reproduced"] == len(ev) and run_["breaks"] == len(ev)
     assert run_["byMechanism"] == [int(np.sum(ev["mechanism"] == m))
                                    for m in range(4)]
-    assert strong["breaks"] == int(np.sum(ev["ratio"] > k))
+    assert strong["breaks"] == int(np.sum(ratio > k))
     assert 0 < strong["breaks"] < len(ev)
+
+    # Variants that switch a mode or a mechanism off, dropping the run's
+    # entries that only the mode or mechanism accepts (both aborted the
+    # replay): binary sizes break the same parents (sizes do not enter
+    # the verdict); without drag, the others keep their mechanism and
+    # the drag break-ups break by another mechanism or not at all
+    n_drag = int(np.sum(ev["mechanism"] == 1))
+    assert n_drag > 0
+    res = breakuplog.replay_breakups(case, {
+        "binary": {"fragmentation": {"mode": "binary"},
+                   "remove": "(fragmentation.betaAlpha)"},
+        "noDrag": {"stresses": {"mechanisms": "(turbulence rotation)"},
+                   "remove": "(stresses.Cd)"}})
+    _, binary, no_drag = res["configurations"]
+    assert binary["breaks"] == len(ev)
+    assert binary["byMechanism"] == run_["byMechanism"]
+    assert no_drag["byMechanism"][1] == 0
+    assert no_drag["breaks"] - no_drag["mechanismChanged"] \
+        == len(ev) - n_drag
+    # a path the run's coefficients do not have is refused, naming the
+    # variants file
+    with pytest.raises(CommandError):
+        breakuplog.replay_breakups(
+            case, {"bad": {"remove": "(fragmentation.betaAlfa)"}})
+    text = (case / "log.breakupReplay").read_text()
+    assert "remove names fragmentation.betaAlfa" in text
+    assert "variants" in text
 
     # A restart from the middle write: the log cut back to it and
     # continued gives the same records, byte for byte
@@ -139,11 +175,47 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     assert "events after it removed" in (again / "log.restart").read_text()
     assert (breakuplog.folder(again) / "events0.bin").read_bytes() == whole
 
-    # An altered fragment: the replay reports it, and -check fails
-    rec = bytearray(whole)
-    off = breakuplog.HEADER_BYTES + breakuplog.DTYPE.fields["U_a"][1]
-    rec[off] ^= 0x01                         # the last bit of U_a.x
-    log.write_bytes(bytes(rec))
+    def edited(edit):
+        """The log's records after edit(records), resealed: read as a
+        run's records (the checksum matches)."""
+        recs = np.frombuffer(whole, breakuplog.DTYPE,
+                             offset=breakuplog.HEADER_BYTES).copy()
+        edit(recs)
+        return whole[:breakuplog.HEADER_BYTES] \
+            + breakuplog.seal(recs).tobytes()
+
+    # Any altered byte of a record is caught by its checksum: the last
+    # bit of U_a.x, a time step, a drag force the rotation verdict does
+    # not use, a strain rate 6 % off (each passed -check before)
+    for field, index, factor in (("U_a", 0, None), ("dt", None, 2.0),
+                                 ("dragForce", 0, 1.5), ("S", 1, 1.06)):
+        recs = np.frombuffer(whole, breakuplog.DTYPE,
+                             offset=breakuplog.HEADER_BYTES).copy()
+        col = recs[field]
+        k = int(np.argmax(np.abs(col if index is None else col[:, index])
+                          > 0))
+        if factor is None:
+            raw = bytearray(recs.tobytes())
+            raw[k * breakuplog.DTYPE.itemsize
+                + breakuplog.DTYPE.fields[field][1]] ^= 0x01
+            data = whole[:breakuplog.HEADER_BYTES] + bytes(raw)
+        else:
+            at = k if index is None else (k, index)
+            col[at] = col[at] * factor if col[at] != 0 else 1e-15
+            data = whole[:breakuplog.HEADER_BYTES] + recs.tobytes()
+        log.write_bytes(data)
+        with pytest.raises(ValueError, match=f"record {k}: checksum"):
+            breakuplog.read_breakup_events(case)
+        res = run([foam_bin("breakupReplay"), "-check"], case,
+                  "log.breakupReplay.check", check=False)
+        assert res.returncode == 1, field
+        assert f"record {k}: checksum" in res.stdout, res.stdout[-1500:]
+
+    # An altered fragment in a resealed record: the replay reports it
+    # as not reproduced, and -check fails
+    def flip(recs):
+        recs["U_a"][0, 0] = np.nextafter(recs["U_a"][0, 0], np.inf)
+    log.write_bytes(edited(flip))
     with pytest.raises(CommandError):
         breakuplog.replay_breakups(case, check=True)
     res = breakuplog.replay_breakups(case)
@@ -192,24 +264,25 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     assert other.read_bytes().startswith(b"aggloCollisionEvents 2")
     assert len(other.read_bytes()) == 338
 
-    # Finite but absurd load values are refused by name (breakupReplay
-    # died by SIGFPE, rc 136, on eps, nu or a strain rate of 1e300)
+    # Finite but absurd load values, resealed, are refused by name
+    # (breakupReplay died by SIGFPE, rc 136, on eps, nu or a strain rate
+    # of 1e300), and so is a value in a slot the header does not name
     for field, index, value in (("epsilon", None, 1e300),
                                 ("nu", None, 1e300), ("nu", None, 1e-300),
                                 ("S", 1, 1e300), ("S", 0, 3e296),
-                                ("dt", None, 1e300)):
-        rec = np.frombuffer(whole, np.uint8, offset=breakuplog.HEADER_BYTES)
-        recs = rec.view(breakuplog.DTYPE).copy()
-        if index is None:
-            recs[field][0] = value
-        else:
-            recs[field][0, index] = value
-        log.write_bytes(whole[:breakuplog.HEADER_BYTES] + recs.tobytes())
+                                ("dt", None, 1e300), ("values", 2, 0.5)):
+        def put(recs):
+            if index is None:
+                recs[field][0] = value
+            else:
+                recs[field][0, index] = value
+        log.write_bytes(edited(put))
         res = run([foam_bin("breakupReplay")], case,
                   "log.breakupReplay.bounds", check=False)
         assert res.returncode == 1, (field, res.returncode)
         assert "record 0:" in res.stdout, res.stdout[-1500:]
-        assert ("time step" if field == "dt" else "load:") in res.stdout
+        assert {"dt": "time step", "values": "the model's values"}.get(
+            field, "load:") in res.stdout
     log.write_bytes(whole)
 
     # With the log switched off, a restart from the first write is

@@ -138,14 +138,14 @@ def read_header(path):
     return tuple(head[len(want):].split()[0].split(","))
 
 
-def body_records(path, data, dtype):
+def body_records(path, data, dtype, header_bytes=HEADER_BYTES):
     """The records of dtype after the header of an event file's bytes
     (ValueError on a partial record at the end)."""
-    body = len(data) - HEADER_BYTES
-    if body % dtype.itemsize:
+    body = len(data) - header_bytes
+    if body < 0 or body % dtype.itemsize:
         raise ValueError(f"{path}: a partial record at the end (a write"
                          " cut off; a restart of the run cuts it back)")
-    return np.frombuffer(data, dtype, body // dtype.itemsize, HEADER_BYTES)
+    return np.frombuffer(data, dtype, body // dtype.itemsize, header_bytes)
 
 
 def read_file(path):

@@ -26,7 +26,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "breakupCriterion.H"
-#include "EAM.H"
 #include "hardSphereInput.H"
 #include "mathematicalConstants.H"
 
@@ -81,10 +80,7 @@ Foam::scalar Foam::breakupCriterion::impactBondEnergy
 {
     return
         impactBonds(N)
-       *agglomerationModels::EAM::vanDerWaalsEnergy
-        (
-            material_, en_, dp, rho0_, dp, rho0_, vn
-        );
+       *material_.vanDerWaalsEnergy(en_, dp, rho0_, dp, rho0_, vn);
 }
 
 

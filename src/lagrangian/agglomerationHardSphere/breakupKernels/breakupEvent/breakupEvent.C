@@ -27,7 +27,9 @@ License
 
 #include "breakupEvent.H"
 #include "eventRecord.H"
+#include "SHA1.H"
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -46,19 +48,25 @@ namespace
     // the fluid's density: the particles' bounds (eventRecord)
     const Foam::scalar impactMax = 1e4;     // m/s
     const Foam::scalar strainMax = 1e12;    // 1/s
-    const Foam::scalar ratioMax = 1e100;
+    const Foam::scalar valueMax = 1e100;    // the model's values
 
     bool within(const Foam::scalar v, const Foam::scalar lo,
                 const Foam::scalar hi)
     {
         return std::isfinite(v) && v >= lo && v <= hi;
     }
+
+    // The offset of the record's checksum
+    const std::size_t checkAt = 36;
+
 }
 
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const std::size_t Foam::breakupEvent::recordBytes;
+const std::size_t Foam::breakupEvent::headerBytes;
+const Foam::label Foam::breakupEvent::nValues;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -75,7 +83,7 @@ Foam::breakupEvent::breakupEvent()
     parent(),
     load(),
     S(Zero),
-    ratio(0),
+    values(scalar(0)),
     a(),
     b()
 {}
@@ -95,7 +103,7 @@ void Foam::breakupEvent::pack(char* buf) const
     put<int32_t>(buf, pos, parent.nPrimary);
     put<int32_t>(buf, pos, a.nPrimary);
     put<int32_t>(buf, pos, b.nPrimary);
-    put<int32_t>(buf, pos, 0);
+    put<uint32_t>(buf, pos, 0);         // the checksum, below
     put<double>(buf, pos, dt);
     putState(buf, pos, parent);
     put<double>(buf, pos, load.epsilon);
@@ -107,9 +115,24 @@ void Foam::breakupEvent::pack(char* buf) const
     {
         put<double>(buf, pos, S[c]);
     }
-    put<double>(buf, pos, ratio);
+    for (const scalar v : values)
+    {
+        put<double>(buf, pos, v);
+    }
     putState(buf, pos, a);
     putState(buf, pos, b);
+
+    std::size_t at = checkAt;
+    put<uint32_t>(buf, at, checksum(buf));
+}
+
+
+uint32_t Foam::breakupEvent::checksum(const char* buf)
+{
+    SHA1 sha;
+    sha.append(buf, checkAt);
+    sha.append(buf + checkAt + 4, recordBytes - checkAt - 4);
+    return std::strtoul(sha.digest().str().substr(0, 8).c_str(), nullptr, 16);
 }
 
 
@@ -138,7 +161,10 @@ void Foam::breakupEvent::unpack(const char* buf)
     {
         S[c] = get<double>(buf, pos);
     }
-    ratio = get<double>(buf, pos);
+    for (scalar& v : values)
+    {
+        v = get<double>(buf, pos);
+    }
     getState(buf, pos, a);
     getState(buf, pos, b);
 }
@@ -146,11 +172,26 @@ void Foam::breakupEvent::unpack(const char* buf)
 
 std::string Foam::breakupEvent::invalid
 (
-    const char*,
-    const label nMechanisms
+    const char* buf,
+    const List<wordList>& names
 ) const
 {
+    const label nMechanisms = names[0].size();
+    const label nFields = names.size() > 2 ? names[2].size() : 0;
     std::ostringstream os;
+    std::size_t at = checkAt;
+    const uint32_t check = eventRecord::get<uint32_t>(buf, at);
+    bool boundedValues = true;
+    forAll(values, i)
+    {
+        boundedValues =
+            boundedValues
+         && (
+                i < nFields
+              ? within(values[i], -valueMax, valueMax)
+              : values[i] == 0
+            );
+    }
     bool boundedS = true;
     for (direction c = 0; c < symmTensor::nComponents; ++c)
     {
@@ -164,6 +205,11 @@ std::string Foam::breakupEvent::invalid
     {
         os << "mechanism " << mechanism << " (valid: 0-"
            << nMechanisms - 1 << ")";
+    }
+    else if (check != checksum(buf))
+    {
+        os << "checksum " << check << " (the record's bytes give "
+           << checksum(buf) << ": the record was altered)";
     }
     else if (parent.nPrimary < 2)
     {
@@ -186,7 +232,6 @@ std::string Foam::breakupEvent::invalid
      || !bounded(load.dragForce, 1)
      || !within(load.wallImpactSpeed, 0, impactMax)
      || !boundedS
-     || !within(ratio, -ratioMax, ratioMax)
     )
     {
         os << "load: epsilon " << load.epsilon << ", nu " << load.nu
@@ -194,13 +239,23 @@ std::string Foam::breakupEvent::invalid
            << text(load.dragForce) << ", wall impact speed "
            << load.wallImpactSpeed << ", strain rate (" << S.xx() << " "
            << S.xy() << " " << S.xz() << " " << S.yy() << " " << S.yz()
-           << " " << S.zz() << "), ratio " << ratio
+           << " " << S.zz() << ")"
            << " (valid: epsilon 0-" << epsilonMax
            << " m2/s3, nu " << nuMin << "-" << nuMax << " m2/s, rho "
            << rhoMin << "-" << rhoMax << " kg/m3, each component of the"
            << " drag force within +-1 N, wall impact speed 0-" << impactMax
            << " m/s, each component of the strain rate within +-"
-           << strainMax << " 1/s, ratio within +-" << ratioMax << ")";
+           << strainMax << " 1/s)";
+    }
+    else if (!boundedValues)
+    {
+        os << "the model's values (";
+        forAll(values, i)
+        {
+            os << (i ? " " : "") << values[i];
+        }
+        os << ") (valid: the " << nFields << " named by the header's fields"
+           << " within +-" << valueMax << ", the others 0)";
     }
     for (const hardSphereState* p : {&parent, &a, &b})
     {

@@ -26,96 +26,49 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "breakupKernel.H"
-#include "hardSphereCollisionKernel.H"
-#include "keyedRandom.H"
 #include "hardSphereInput.H"
-#include "randomStreams.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(breakupKernel, 0);
+    defineRunTimeSelectionTable(breakupKernel, dictionary);
+}
+
+const Foam::label Foam::breakupKernel::maxFields;
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- The model's seed, after refusing the entries of no one: neither
+    //  the model's nor the driver's eventLog
+    Foam::label checkedSeed
+    (
+        const Foam::dictionary& coeffs,
+        const Foam::wordList& keys
+    )
+    {
+        Foam::wordList valid(keys);
+        valid.append("eventLog");
+        Foam::hardSphereInput::checkKeys(coeffs, valid);
+        return Foam::hardSphereInput::getSeed(coeffs);
+    }
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::breakupKernel::breakupKernel
 (
     const dictionary& coeffs,
-    const hardSphereCollisionKernel& collision
+    const wordList& keys
 )
 :
-    criterion_
-    (
-        coeffs, collision.material(), collision.structure(),
-        collision.coeffs().en()
-    ),
-    fragmentation_
-    (
-        coeffs.subDict("fragmentation"),
-        collision.structure(),
-        collision.material().rho0()
-    ),
-    rate_
-    (
-        coeffs.found("rate")
-      ? breakupRate(coeffs.subDict("rate"))
-      : breakupRate()
-    ),
-    randomSeed_(hardSphereInput::getSeed(coeffs))
+    randomSeed_(checkedSeed(coeffs, keys))
 {}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::wordList Foam::breakupKernel::keys()
-{
-    return {"randomSeed", "strength", "stresses", "fragmentation", "rate"};
-}
-
-
-bool Foam::breakupKernel::deferred
-(
-    const breakupCriterion::verdict& v,
-    const breakupStresses::load& L,
-    const scalar d,
-    const scalar dt,
-    const key& k
-) const
-{
-    if
-    (
-        !v.breaks()
-     || v.mechanism != breakupStresses::TURBULENCE
-     || !rate_.stochastic()
-    )
-    {
-        return false;
-    }
-    keyedRandom rnd
-    (
-        randomSeed_, randomStreams::breakupRate, k.origProc, k.origId,
-        k.timeIndex, 0
-    );
-    return rnd.sample01() >= rate_.probability(dt, L.epsilon, L.nu, d);
-}
-
-
-Foam::agglomerateFragmentation::fragments Foam::breakupKernel::split
-(
-    const hardSphereState& parent,
-    const breakupCriterion::verdict& v,
-    const symmTensor& S,
-    const key& k
-) const
-{
-    keyedRandom rnd
-    (
-        randomSeed_, randomStreams::breakup, k.origProc, k.origId,
-        k.timeIndex, 0
-    );
-    const label N1 = fragmentation_.fragmentSize(parent.nPrimary, rnd);
-    const vector e =
-        fragmentation_.direction
-        (
-            S, parent.omega, v.mechanism == breakupStresses::ROTATION, rnd
-        );
-    return fragmentation_.split(parent, N1, e);
-}
 
 
 // ************************************************************************* //

@@ -44,6 +44,7 @@ namespace
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const std::size_t Foam::collisionEvent::recordBytes;
+const std::size_t Foam::collisionEvent::headerBytes;
 const Foam::label Foam::collisionEvent::ghostBranch;
 
 

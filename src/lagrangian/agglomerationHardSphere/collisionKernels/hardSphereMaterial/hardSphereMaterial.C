@@ -168,4 +168,28 @@ void Foam::hardSphereMaterial::write(Ostream& os) const
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::hardSphereMaterial::vanDerWaalsEnergy
+(
+    const scalar en,
+    const scalar d1,
+    const scalar rho1,
+    const scalar d2,
+    const scalar rho2,
+    const scalar vE
+) const
+{
+    // AB16 Eq. 37
+    const scalar bracket =
+        rho1*rho2*(1 - en*en)
+       /(
+            6*pMax_*(d1 + d2)
+           *(rho1*d1*d1*d1 + rho2*d2*d2*d2)
+        );
+
+    return H_/(12*sqr(delta0_))*sqr(d1*d2)*vE*std::sqrt(bracket);
+}
+
+
 // ************************************************************************* //

@@ -47,7 +47,7 @@ long long Foam::eventFile<Event>::fileBytes(const fileName& file)
 
 
 template<class Event>
-Foam::wordList Foam::eventFile<Event>::checkHeader
+Foam::List<Foam::wordList> Foam::eventFile<Event>::checkHeader
 (
     std::istream& is,
     const fileName& file
@@ -55,7 +55,8 @@ Foam::wordList Foam::eventFile<Event>::checkHeader
 {
     std::string head(headerBytes, ' ');
     is.read(&head[0], head.size());
-    const std::string want(layout() + " " + Event::namesKey() + " ");
+    const wordList keys(Event::namesKeys());
+    const std::string want(layout() + " " + keys[0] + " ");
     if (!is || head.compare(0, want.size(), want) != 0)
     {
         FatalErrorInFunction
@@ -65,21 +66,32 @@ Foam::wordList Foam::eventFile<Event>::checkHeader
             << " event file)" << exit(FatalError);
     }
 
-    std::istringstream names(head.substr(want.size()));
-    std::string list;
-    names >> list;
-    wordList result;
-    std::istringstream items(list);
-    std::string name;
-    while (std::getline(items, name, ','))
+    // key list key list ...: the lists comma-separated, "-" if empty
+    std::istringstream items(head.substr(layout().size()));
+    List<wordList> result(keys.size());
+    forAll(keys, i)
     {
-        result.append(word(name));
+        std::string key, list;
+        items >> key >> list;
+        if (key != keys[i] || list.empty())
+        {
+            FatalErrorInFunction
+                << Event::title() << " file " << file << ": the header"
+                << " names no " << keys[i] << " (it gives the keys "
+                << keys << " in this order)" << exit(FatalError);
+        }
+        std::istringstream names(list == "-" ? std::string() : list);
+        std::string name;
+        while (std::getline(names, name, ','))
+        {
+            result[i].append(word(name));
+        }
     }
-    if (result.empty())
+    if (result[0].empty())
     {
         FatalErrorInFunction
             << Event::title() << " file " << file << ": the header names no"
-            << " " << Event::namesKey() << exit(FatalError);
+            << " " << keys[0] << exit(FatalError);
     }
     return result;
 }
@@ -106,21 +118,33 @@ std::string Foam::eventFile<Event>::layout()
 
 
 template<class Event>
-std::string Foam::eventFile<Event>::header(const wordList& names)
+std::string Foam::eventFile<Event>::header(const List<wordList>& names)
 {
-    std::string head(layout() + " " + Event::namesKey() + " ");
-    forAll(names, b)
+    const wordList keys(Event::namesKeys());
+    std::string head(layout());
+    forAll(keys, i)
     {
-        head += (b ? "," : "") + std::string(names[b]);
+        head += " " + keys[i] + " ";
+        const wordList none;
+        const wordList& list = i < names.size() ? names[i] : none;
+        forAll(list, b)
+        {
+            head += (b ? "," : "") + std::string(list[b]);
+        }
+        head += list.empty() ? "-" : "";
     }
-    if (names.empty() || head.size() >= headerBytes)
+    if
+    (
+        names.size() != keys.size() || names[0].empty()
+     || head.size() >= headerBytes
+    )
     {
         FatalErrorInFunction
             << "The names " << names << " do not fit the "
             << label(headerBytes) << "-byte header of the "
-            << Event::title() << " log (at least one, "
-            << label(headerBytes - 1) << " characters in all with the"
-            << " layout)" << exit(FatalError);
+            << Event::title() << " log (" << keys << ", at least one "
+            << keys[0] << ", " << label(headerBytes - 1)
+            << " characters in all with the layout)" << exit(FatalError);
     }
     return head;
 }
@@ -131,14 +155,14 @@ void Foam::eventFile<Event>::append
 (
     const fileName& file,
     const UList<Event>& events,
-    const wordList& names
+    const List<wordList>& names
 )
 {
     long long size = fileBytes(file);
     if (size > 0)
     {
         std::ifstream is(file.c_str(), std::ios::binary);
-        const wordList inFile(checkHeader(is, file));
+        const List<wordList> inFile(checkHeader(is, file));
         if (inFile != names)
         {
             if (size > static_cast<long long>(headerBytes))
@@ -146,7 +170,7 @@ void Foam::eventFile<Event>::append
                 FatalErrorInFunction
                     << Event::title() << " file " << file << " holds events"
                     << " of " << Event::namesOwner() << " with the "
-                    << Event::namesKey() << " " << inFile << "; this run's"
+                    << Event::namesKeys() << " " << inFile << "; this run's"
                     << " model has " << names << ": move the folder away"
                     << " to start a new log" << exit(FatalError);
             }
@@ -188,7 +212,7 @@ template<class Event>
 Foam::List<Event> Foam::eventFile<Event>::read
 (
     const fileName& file,
-    wordList& names
+    List<wordList>& names
 )
 {
     const long long size = fileBytes(file);
@@ -220,7 +244,7 @@ Foam::List<Event> Foam::eventFile<Event>::read
         e.unpack(buf);
 
         // A corrupt record would be replayed as an event
-        const std::string why(e.invalid(buf, names.size()));
+        const std::string why(e.invalid(buf, names));
         if (!why.empty())
         {
             FatalErrorInFunction

@@ -74,7 +74,7 @@ Foam::eventLogFiles<Event>::eventLogFiles
     const word& cloudName,
     const word& suffix,
     const word& recordName,
-    const wordList& names
+    const List<wordList>& names
 )
 :
     mesh_(mesh),
@@ -218,7 +218,7 @@ void Foam::eventLogFiles<Event>::refuseLaterEvents
         {
             if (f.hasExt("bin") && f.startsWith("events"))
             {
-                wordList names;
+                List<wordList> names;
                 for (const Event& e : eventFile<Event>::read(dir/f, names))
                 {
                     later += (e.timeIndex > start);

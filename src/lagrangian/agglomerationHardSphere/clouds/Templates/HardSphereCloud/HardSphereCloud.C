@@ -30,6 +30,7 @@ License
 #include "clockTime.H"
 #include "hardSphereCloudState.H"
 #include "hardSphereInput.H"
+#include "AgglomerateBreakup.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 

@@ -139,31 +139,6 @@ Foam::agglomerationModels::EAM::EAM
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-Foam::scalar Foam::agglomerationModels::EAM::vanDerWaalsEnergy
-(
-    const hardSphereMaterial& material,
-    const scalar en,
-    const scalar d1,
-    const scalar rho1,
-    const scalar d2,
-    const scalar rho2,
-    const scalar vE
-)
-{
-    // AB16 Eq. 37
-    const scalar bracket =
-        rho1*rho2*(1 - en*en)
-       /(
-            6*material.pMax()*(d1 + d2)
-           *(rho1*d1*d1*d1 + rho2*d2*d2*d2)
-        );
-
-    return
-        material.H()/(12*sqr(material.delta0()))
-       *sqr(d1*d2)*vE*std::sqrt(bracket);
-}
-
-
 Foam::scalar Foam::agglomerationModels::EAM::dumbbellRotationalEnergy
 (
     const vector& L,
@@ -229,9 +204,9 @@ void Foam::agglomerationModels::EAM::collide
     const scalar vE = impactSpeed(impactVelocity_, pair);
 
     const scalar dE =
-        vanDerWaalsEnergy
+        material_.vanDerWaalsEnergy
         (
-            material_, coeffs_.en(), p1.d, p1.rho, p2.d, p2.rho, vE
+            coeffs_.en(), p1.d, p1.rho, p2.d, p2.rho, vE
         );
 
     // 3. Energies after the collision (AB16 Eq. 22) and of the would-be

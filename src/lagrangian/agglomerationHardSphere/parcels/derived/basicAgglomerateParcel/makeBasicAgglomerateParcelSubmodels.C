@@ -49,7 +49,7 @@ License
 #include "NoParticleRotation.H"
 #include "FluidTorqueRotation.H"
 #include "NoAgglomerateBreakup.H"
-#include "StressThresholdBreakup.H"
+#include "AgglomerateBreakup.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -99,10 +99,12 @@ makeAgglomerateBreakupModelType
     NoAgglomerateBreakup,
     basicAgglomeratingCloud
 );
-makeAgglomerateBreakupModelType
+// the driver of the break-up family (breakupKernel), selected by the
+// model's name
+defineNamedTemplateTypeNameAndDebug
 (
-    StressThresholdBreakup,
-    basicAgglomeratingCloud
+    Foam::AgglomerateBreakup<Foam::basicAgglomeratingCloud>,
+    0
 );
 
 

@@ -25,6 +25,15 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "AgglomerateBreakupModel.H"
+#include "breakupKernel.H"
+
+// The driver of the family: declared here, since the parcel's headers
+// include this file; complete where the cloud (HardSphereCloud.C) and its
+// submodels instantiate the selector
+namespace Foam
+{
+    template<class CloudType> class AgglomerateBreakup;
+}
 
 // * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * * //
 
@@ -39,16 +48,25 @@ Foam::AgglomerateBreakupModel<CloudType>::New
     // Absent: none, the paper's model (no break-up)
     const word modelType(dict.getOrDefault<word>("breakupModel", "none"));
 
+    // A model of the family: the one driver runs its kernel
+    const wordList models(breakupKernel::types());
+    if (models.found(modelType))
+    {
+        return autoPtr<AgglomerateBreakupModel<CloudType>>
+        (
+            new AgglomerateBreakup<CloudType>(dict, owner, modelType)
+        );
+    }
+
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
     if (!cstrIter.found())
     {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "breakupModel",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+        wordList valid(dictionaryConstructorTablePtr_->sortedToc());
+        valid.append(models);
+        FatalIOErrorInFunction(dict)
+            << "Unknown breakupModel " << modelType << nl << nl
+            << "Valid breakupModel types: " << valid
+            << exit(FatalIOError);
     }
 
     return autoPtr<AgglomerateBreakupModel<CloudType>>

@@ -74,7 +74,11 @@ Foam::collisionEventLog::collisionEventLog
 )
 :
     mesh_(mesh),
-    files_(mesh, cloudName, "CollisionEvents", "collisionEventLog", branches),
+    files_
+    (
+        mesh, cloudName, "CollisionEvents", "collisionEventLog",
+        List<wordList>(1, branches)
+    ),
     y_(wallDistance(mesh))
 {}
 

@@ -24,45 +24,37 @@ License
     along with OpenFOAM.  If not, see <http://www.gnu.org/licenses/>.
 \*---------------------------------------------------------------------------*/
 
-#include "StressThresholdBreakup.H"
+#include "AgglomerateBreakup.H"
 #include "hardSphereCollisionKernel.H"
-#include "hardSphereInput.H"
+#include "breakupCriterion.H"
 #include "fvcGrad.H"
 #include "hardSphereStep.H"
+#include "hardSphereParcelStage.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
 const Foam::hardSphereCollisionKernel&
-Foam::StressThresholdBreakup<CloudType>::kernelOf(const CloudType& owner)
+Foam::AgglomerateBreakup<CloudType>::collisionOf
+(
+    const CloudType& owner,
+    const word& type
+)
 {
     const hardSphereCollisionKernel* k = owner.collision().kernel();
-    if (!k || !k->hasStructure() || !k->agglomeration().cohesive())
+    if (!k)
     {
         FatalIOErrorInFunction(owner.subModelProperties())
-            << "breakupModel stressThreshold in cloud " << owner.name()
-            << " needs collisionModel hardSphere with an agglomeration"
-            << " model (EAM, EAMAlletto2014 or MAM) and a structureModel:"
-            << " the bond force and the fragments' sizes are theirs"
-            << exit(FatalIOError);
+            << "breakupModel " << type << " in cloud " << owner.name()
+            << " needs collisionModel hardSphere: the agglomerates and"
+            << " their material are its" << exit(FatalIOError);
     }
     return *k;
 }
 
 
 template<class CloudType>
-const Foam::dictionary&
-Foam::StressThresholdBreakup<CloudType>::checkedCoeffs(const dictionary& dict)
-{
-    wordList valid(breakupKernel::keys());
-    valid.append("eventLog");
-    hardSphereInput::checkKeys(dict, valid);
-    return dict;
-}
-
-
-template<class CloudType>
-Foam::vector Foam::StressThresholdBreakup<CloudType>::dragForce
+Foam::vector Foam::AgglomerateBreakup<CloudType>::dragForce
 (
     parcelType& p,
     trackingData& td
@@ -85,20 +77,17 @@ Foam::vector Foam::StressThresholdBreakup<CloudType>::dragForce
 
 
 template<class CloudType>
-Foam::scalar Foam::StressThresholdBreakup<CloudType>::split
+Foam::scalar Foam::AgglomerateBreakup<CloudType>::split
 (
     parcelType& p,
     breakupEvent& e
 )
 {
+    breakupKernel::verdict v;
+    v.mechanism = e.mechanism;
+    v.values = e.values;
     const agglomerateFragmentation::fragments f =
-        kernel_.split
-        (
-            e.parent,
-            {e.mechanism, e.ratio, 0},
-            e.S,
-            {e.proc, e.id, e.timeIndex}
-        );
+        kernel_->split(e.parent, v, e.S, {e.proc, e.id, e.timeIndex});
     e.a = f.a;
     e.b = f.b;
 
@@ -132,26 +121,27 @@ Foam::scalar Foam::StressThresholdBreakup<CloudType>::split
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
+Foam::AgglomerateBreakup<CloudType>::AgglomerateBreakup
 (
     const dictionary& dict,
-    CloudType& owner
+    CloudType& owner,
+    const word& type
 )
 :
-    AgglomerateBreakupModel<CloudType>(dict, owner, typeName),
+    AgglomerateBreakupModel<CloudType>(dict, owner, type),
     kernel_
     (
-        checkedCoeffs(this->coeffDict()),
-        kernelOf(owner)
+        breakupKernel::New(type, this->coeffDict(), collisionOf(owner, type))
     ),
     log_(nullptr),
     columns_(-1, -1)
 {
-    // This model's columns of the statistics
-    wordList counters(breakupStresses::mechanismTypeNames.size());
+    // The model's columns of the statistics: one per mechanism
+    const wordList& mechanisms = kernel_->mechanisms();
+    wordList counters(mechanisms.size());
     forAll(counters, m)
     {
-        word name(breakupStresses::mechanismTypeNames.names()[m]);
+        word name(mechanisms[m]);
         name[0] = toupper(name[0]);
         counters[m] = "nBreakup" + name;
     }
@@ -161,8 +151,8 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
             hardSphereStep::typeName
         ).addColumns(counters, {"breakupEnergyChange"});
 
-    Info<< "    agglomerate break-up: stressThreshold (doc/breakup.md), ";
-    kernel_.writeRate(Info);
+    Info<< "    agglomerate break-up: " << type << " (doc/breakup.md), ";
+    kernel_->write(Info);
     Info<< endl;
 
     if (this->coeffDict().template getOrDefault<bool>("eventLog", false))
@@ -173,7 +163,8 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
             (
                 owner.mesh(), owner.name(), "BreakupEvents",
                 "breakupEventLog",
-                breakupStresses::mechanismTypeNames.names()
+                List<wordList>({mechanisms, wordList(1, type),
+                                kernel_->fields()})
             )
         );
     }
@@ -190,7 +181,7 @@ Foam::StressThresholdBreakup<CloudType>::StressThresholdBreakup
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
+void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
 {
     CloudType& cloud = this->owner();
     const fvMesh& mesh = cloud.mesh();
@@ -255,7 +246,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
         L.omega = p.omega();
         L.wallImpactSpeed = st.wallImpactSpeed();
         L.dragForce = Zero;
-        if (kernel_.criterion().stresses().on(breakupStresses::DRAG))
+        if (kernel_->needsDrag())
         {
             p.setCellValues(cloud, td);
             L.dragForce = dragForce(p, td);
@@ -266,12 +257,13 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             st.relocating() ? st.relocationTarget() : st.knownPosition(),
             p.U(), p.omega(), p.d(), p.rho(), p.nPrimary()
         );
-        const breakupCriterion::verdict v = kernel_.check(s, L);
         const breakupKernel::key k
         {
             p.origProc(), p.origId(), runTime.timeIndex()
         };
-        if (kernel_.deferred(v, L, p.d(), runTime.deltaTValue(), k))
+        const breakupKernel::verdict v =
+            kernel_->check(s, L, runTime.deltaTValue(), k);
+        if (v.mechanism >= 0 && v.deferred)
         {
             ++nDeferred;
             continue;
@@ -282,15 +274,11 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             {
                 Pout<< "    break-up of (" << p.origProc() << ' '
                     << p.origId() << "): N " << p.nPrimary() << ", "
-                    << breakupStresses::mechanismTypeNames
-                       [
-                           breakupStresses::mechanismType(v.mechanism)
-                       ]
-                    << " stress/strength " << v.ratio << ", sigma_T "
-                    << v.sigmaT << " Pa, eps " << L.epsilon
-                    << " m2/s3, |F_D| " << mag(L.dragForce) << " N, |U| "
-                    << mag(p.U()) << " m/s, |omega| " << mag(p.omega())
-                    << " 1/s" << endl;
+                    << kernel_->mechanisms()[v.mechanism] << ", values "
+                    << v.values << ", eps " << L.epsilon << " m2/s3, |F_D| "
+                    << mag(L.dragForce) << " N, |U| " << mag(p.U())
+                    << " m/s, |omega| " << mag(p.omega()) << " 1/s"
+                    << endl;
             }
             breakupEvent e;
             e.timeIndex = k.timeIndex;
@@ -301,7 +289,7 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
             e.parent = s;
             e.load = L;
             e.S = S;
-            e.ratio = v.ratio;
+            e.values = v.values;
             parents.append(&p);
             events.append(e);
             ids.append(labelPair(p.origProc(), p.origId()));
@@ -311,7 +299,8 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     // The new parcels' global ids (collective)
     const labelList newIds(this->ids_.assign(ids));
 
-    labelList nEvents(breakupStresses::mechanismTypeNames.size(), Zero);
+    const wordList& mechanisms = kernel_->mechanisms();
+    labelList nEvents(mechanisms.size(), Zero);
     scalar dKE = 0;
     forAll(parents, i)
     {
@@ -352,15 +341,10 @@ void Foam::StressThresholdBreakup<CloudType>::breakup(trackingData& td)
     Info<< "    Break-up: " << sum(nEvents) << " events (";
     forAll(nEvents, m)
     {
-        Info<< (m ? ", " : "")
-            << breakupStresses::mechanismTypeNames
-               [
-                   breakupStresses::mechanismType(m)
-               ]
-            << ' ' << nEvents[m];
+        Info<< (m ? ", " : "") << mechanisms[m] << ' ' << nEvents[m];
     }
     Info<< ")";
-    if (kernel_.rate().stochastic())
+    if (kernel_->defers())
     {
         Info<< ", deferred by the rate " << nDeferred;
     }
