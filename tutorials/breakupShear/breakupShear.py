@@ -174,8 +174,10 @@ def analyse(case, series, gamma, p):
     return dict(
         series=series, gamma=gamma, n0=p["n0"], nPredicted=n_pred,
         nMax=n_max,
-        nMeanAgglomerate=float(s["nPrimariesInAgglomerates"][-1]
-                               / max(s["nAgglomerates"][-1], 1)),
+        # None (JSON null, "—" in the table) when no agglomerate is left
+        nMeanAgglomerate=(float(s["nPrimariesInAgglomerates"][-1]
+                                / s["nAgglomerates"][-1])
+                          if s["nAgglomerates"][-1] > 0 else None),
         nAgglomerates=int(s["nAgglomerates"][-1]), primaries=primaries,
         breakups={m: int(s[f"nBreakup{m}"][-1])
                   for m in ("Turbulence", "Drag", "Rotation")},
@@ -184,9 +186,10 @@ def analyse(case, series, gamma, p):
         verdict=verdict,
         history=dict(t=t[::50].tolist(),
                      nMax=s["maxPrimaries"][::50].tolist(),
-                     nMean=(s["nPrimariesInAgglomerates"]
-                            / np.maximum(s["nAgglomerates"], 1))[::50]
-                     .tolist()))
+                     # None where no agglomerate is left
+                     nMean=[float(a / k) if k > 0 else None for a, k in
+                            zip(s["nPrimariesInAgglomerates"][::50],
+                                s["nAgglomerates"][::50])]))
 
 
 def judge(n_max, n_pred, primaries, primaries0, eroding):
@@ -199,6 +202,11 @@ def judge(n_max, n_pred, primaries, primaries0, eroding):
     return "n/r (still eroding)" if eroding else "PASS"
 
 
+def mean_text(n):
+    """The mean agglomerate size in the table's column ("—": none left)."""
+    return f"{n:5.1f}" if n is not None else "    —"
+
+
 def table(rows):
     out = ["series    gamma [1/s]  N0  predicted  max  mean   aggl.  turb"
            "  drag   rot  reaggl.  verdict"]
@@ -206,7 +214,7 @@ def table(rows):
         b = r["breakups"]
         out.append(f"{r['series']:9s} {r['gamma']:11.3g} {r['n0']:4d}"
                    f" {r['nPredicted']:9d}"
-                   f" {r['nMax']:4d} {r['nMeanAgglomerate']:5.1f}"
+                   f" {r['nMax']:4d} {mean_text(r['nMeanAgglomerate'])}"
                    f" {r['nAgglomerates']:6d} {b['Turbulence']:5d}"
                    f" {b['Drag']:5d} {b['Rotation']:5d}"
                    f" {r['reagglomerations']:8d}  {r['verdict']}")
@@ -230,7 +238,7 @@ def plots(all_rows, out):
         h = r["history"]
         line, = ax.plot(1e3 * np.array(h["t"]), h["nMax"],
                         label=f"γ̇ = {r['gamma']:.3g} 1/s, max")
-        ax.plot(1e3 * np.array(h["t"]), h["nMean"], ":",
+        ax.plot(1e3 * np.array(h["t"]), np.array(h["nMean"], float), ":",
                 color=line.get_color())
         ax.axhline(r["nPredicted"], ls="--", lw=0.8,
                    color=line.get_color())
@@ -277,9 +285,13 @@ def plots(all_rows, out):
         sel = [r for r in all_rows if r["series"] == series]
         ax.plot([r["gamma"] for r in sel], [r["nMax"] for r in sel],
                 mk, ms=8, label=f"{series}: largest")
-        ax.plot([r["gamma"] for r in sel],
-                [r["nMeanAgglomerate"] for r in sel], mk, mfc="none",
-                ms=8, label=f"{series}: mean agglomerate")
+        has = [r for r in sel if r["nMeanAgglomerate"] is not None]
+        none = ", ".join(f"{r['gamma']:.3g}" for r in sel
+                         if r["nMeanAgglomerate"] is None)
+        ax.plot([r["gamma"] for r in has],
+                [r["nMeanAgglomerate"] for r in has], mk, mfc="none",
+                ms=8, label=f"{series}: mean agglomerate"
+                + (f" (none left at γ̇ = {none} 1/s)" if none else ""))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("shear rate γ̇ [1/s]")
