@@ -285,10 +285,8 @@ int main(int argc, char *argv[])
                         << " dictionary of kernel entries"
                         << exit(FatalIOError);
                 }
-                dictionary kd
-                (
-                    applyVariant(runKernel, v.dict(), f/v.keyword())
-                );
+                const fileName named(f/v.keyword());
+                dictionary kd(applyVariant(runKernel, v.dict(), named));
 
                 // Another model: the run model's coefficients do not apply
                 // (unknown entries of the other model)
