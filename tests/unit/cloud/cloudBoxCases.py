@@ -62,7 +62,8 @@ def gas_kernel(en):
             "    agglomerationModel none;\n    walls {}\n")
 
 
-def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1)):
+def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1),
+                      hard_sphere=""):
     """300 quartz primaries at about 2 mm/s in a box periodic in x and z,
     walls in y: collisions, agglomerates (under EAM and MAM: seed 13) and
     wall impacts within 40 steps."""
@@ -76,7 +77,8 @@ def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1)):
     box_case(case_dir, L=(Lb, Lb, Lb), n=(6, 6, 6),
              kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
              end_time=end_time, write_interval=write_interval,
-             agglomeration="EAM", decompose=decompose)
+             agglomeration="EAM", decompose=decompose,
+             hard_sphere=hard_sphere)
 
 
 def add_hard_sphere_entries(case_dir, entries):

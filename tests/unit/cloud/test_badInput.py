@@ -115,6 +115,10 @@ CASES = {
                             "sigmaGamma"),
     "sandgrainShadow": (WALL, SAND.replace("}", "shadowMode none; }"),
                         "none"),
+    # deposition takes no coefficients
+    "stickCoeffsEntry": (WALL, "wallModel stick; stickCoeffs { en 0.5; }",
+                         "en"),
+    "stickMisspelt": (WALL, WALL.replace("smooth;", "stik;"), "stik"),
     "wallPatchMissing": ('walls { ".*"', 'walls { "nothing"', "xMin"),
     # an entry that names no wall patch, or one shadowed by another entry,
     # was silently ignored

@@ -14,7 +14,8 @@
     - audit: the mass and primaries after the stage against those before
       (auditBefore keeps the tracked sums): silent within 1e-11 relative,
       fatal beyond, nothing if the stage did not run; auditAfter sums the
-      cloud after the stage and stops on a parcel that lost mass.
+      cloud after the stage plus what left it (a deposited parcel) and
+      stops on a parcel that lost mass or one that left uncounted.
 \*---------------------------------------------------------------------------*/
 
 #include "TrackedParcels.H"
@@ -216,11 +217,30 @@ TEST(hardSphereStep, massAudit)
 
     // The cloud's sums after the stage: unchanged passes, a parcel that
     // lost mass stops the run
-    EXPECT_EQ(errorMessage([&]{ step.auditAfter(cloud); }), "");
+    EXPECT_EQ(errorMessage([&]{ step.auditAfter(cloud, 0, 0); }), "");
+
+    // A parcel that left the cloud (deposited) in the stage: kept by
+    // what left, lost without it
+    cloud.parcels.pop_back();
+    EXPECT_EQ(errorMessage([&]{ step.auditAfter(cloud, 3e-12, 1); }), "");
+    EXPECT_NE
+    (
+        errorMessage([&]{ step.auditAfter(cloud, 0, 0); })
+       .find("not conserved"),
+        std::string::npos
+    );
+    EXPECT_NE
+    (
+        errorMessage([&]{ step.auditAfter(cloud, 3e-12, 0); })
+       .find("primaries 6 -> 5"),
+        std::string::npos
+    );
+
     cloud.parcels.begin()->mass_ *= 0.999;
     EXPECT_NE
     (
-        errorMessage([&]{ step.auditAfter(cloud); }).find("not conserved"),
+        errorMessage([&]{ step.auditAfter(cloud, 3e-12, 1); })
+       .find("not conserved"),
         std::string::npos
     );
 

@@ -43,7 +43,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2,
              frozen=True, tol=1e-8, source_scheme="semiImplicit 1",
              patch_interaction="patchInteractionModel none;", breakup=""):
-    """Write a complete case. kinds: 'wall' or 'cyclic' per direction.
+    """Write a complete case. kinds: 'wall', 'cyclic' or 'patch' (open)
+    per direction.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
     hard_sphere: the body of the collision model's hardSphereCoeffs
     (default: KERNEL, the agglomeration model and smooth walls), or "none"
@@ -56,6 +57,9 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
     steps = round(end_time / dt)
     write_interval = write_interval or steps
     names = "xyz"
+    for kind in kinds:
+        if kind not in ("wall", "cyclic", "patch"):
+            raise ValueError(f"box kind '{kind}': wall, cyclic or patch")
     Lx, Ly, Lz = L
     pts = [(0, 0, 0), (Lx, 0, 0), (Lx, Ly, 0), (0, Ly, 0),
            (0, 0, Lz), (Lx, 0, Lz), (Lx, Ly, Lz), (0, Ly, Lz)]
@@ -73,8 +77,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
             bnd.append(f"{k}Max {{ type cyclic; neighbourPatch {k}Min; "
                        f"faces ({hi}); }}")
         else:
-            bnd.append(f"{k}Min {{ type wall; faces ({lo}); }}")
-            bnd.append(f"{k}Max {{ type wall; faces ({hi}); }}")
+            bnd.append(f"{k}Min {{ type {kind}; faces ({lo}); }}")
+            bnd.append(f"{k}Max {{ type {kind}; faces ({hi}); }}")
     foamfile(case / "system/blockMeshDict", "dictionary", "system",
              "blockMeshDict",
              "scale 1;\nvertices (" + " ".join(vec(p) for p in pts) + ");\n"
@@ -128,6 +132,10 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
             if kind == "cyclic":
                 ub.append(f"{k}{side} {{ type cyclic; }}")
                 pb.append(f"{k}{side} {{ type cyclic; }}")
+            elif kind == "patch":
+                ub.append(f"{k}{side} {{ type zeroGradient; }}")
+                pb.append(f"{k}{side} {{ type fixedValue; "
+                          "value uniform 0; }")
             else:
                 uw = (wall_velocity or {}).get(f"{k}{side}", (0, 0, 0))
                 ub.append(f"{k}{side} {{ type fixedValue; "

@@ -61,6 +61,30 @@ def read_record(case, time, cloud):
     return out
 
 
+#: What left a hard-sphere cloud through the boundary, per patch
+#: (clouds/cloudMassBalance)
+BALANCE = "cloudMassBalance"
+
+
+def read_mass_balance(case, time, cloud="kinematicCloud"):
+    """The mass balance of a written cloud (None if absent): massStart
+    (float), nPrimariesStart (int) and, under 'deposited' and 'escaped',
+    {patch: {"nParcels": int, "nPrimaries": int, "mass": float}}."""
+    from .foamfile import read_dict
+    f = Path(case) / str(time) / "uniform" / "lagrangian" / cloud / BALANCE
+    if not f.is_file():
+        return None
+    d = read_dict(f)
+    out = {"massStart": float(d["massStart"]),
+           "nPrimariesStart": int(d["nPrimariesStart"])}
+    for way in ("deposited", "escaped"):
+        out[way] = {patch: {"nParcels": int(v["nParcels"]),
+                            "nPrimaries": int(v["nPrimaries"]),
+                            "mass": float(v["mass"])}
+                    for patch, v in (d.get(way) or {}).items()}
+    return out
+
+
 def write_cloud(case, positions, d, rho, U=None, omega=None, n_primary=None,
                 cloud="kinematicCloud", time="0", ids=None, count=None,
                 totals=None):

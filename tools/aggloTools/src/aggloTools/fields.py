@@ -1,5 +1,6 @@
 """Volume fields: the internalField of a volScalarField or volVectorField
-file, read (ASCII or binary) and replaced (ASCII)."""
+file, read (ASCII or binary) and replaced (ASCII), and the values of one
+patch (ASCII)."""
 
 import re
 from pathlib import Path
@@ -23,6 +24,33 @@ def read_internal(path):
         m2 = re.search(r"internalField\s+uniform\s+([^;]+);", text)
         return np.array([float(c) for c in m2.group(1).strip('()').split()])
     return ascii_list(text, m.end())
+
+
+def read_patch(path, patch, n_faces):
+    """The face values of one patch of a volume field's boundaryField
+    (ASCII) as an array ((n_faces,) or (n_faces, 3); a uniform value
+    repeated); a patch without a value entry is a ValueError."""
+    text = Path(path).read_text()
+    start = re.search(r"\bboundaryField\s*\{", text)
+    m = start and re.compile(r"(?m)^\s*\"?" + re.escape(patch)
+                             + r"\"?\s*\{").search(text, start.end())
+    if not m:
+        raise ValueError(f"{path}: no patch {patch} in boundaryField")
+    end = text.index("}", m.end())
+    v = re.compile(r"\bvalue\s+(uniform|nonuniform\s+List<\w+>)\s*")
+    mv = v.search(text, m.end(), end)
+    if not mv:
+        raise ValueError(f"{path}: patch {patch} has no value")
+    if mv.group(1) == "uniform":
+        value = text[mv.end():text.index(";", mv.end())].strip()
+        one = np.array([float(c) for c in value.strip("()").split()])
+        return np.tile(one, (n_faces, 1)) if one.size > 1 \
+            else np.full(n_faces, one[0])
+    out = ascii_list(text, mv.end())
+    if len(out) != n_faces:
+        raise ValueError(f"{path}: patch {patch} has {len(out)} values, "
+                         f"the mesh {n_faces} faces")
+    return out
 
 
 def set_internal_vector_field(path, values):

@@ -67,28 +67,16 @@ void Foam::HardSphereCloud<CloudType>::setModels()
     // The subModels dictionary: the entries of v1912's kinematic cloud and
     // this cloud's own, and the models' <model>Coeffs; a misspelt one
     // (say breakUpModel, which would leave break-up off) stops
-    const dictionary& smd = this->subModelProperties();
-    const wordList subModelKeys
-    ({
-        "particleForces", "injectionModels", "dispersionModel",
-        "patchInteractionModel", "stochasticCollisionModel",
-        "surfaceFilmModel", "collisionModel", "rotationModel",
-        "breakupModel"
-    });
-    for (const entry& e : smd)
-    {
-        const word& key = e.keyword();
-        const bool coeffs =
-            key.size() > 6 && key.compare(key.size() - 6, 6, "Coeffs") == 0;
-        if (!coeffs && !subModelKeys.found(key))
+    hardSphereInput::checkKeysOrCoeffs
+    (
+        this->subModelProperties(),
         {
-            FatalIOErrorInFunction(smd)
-                << "Unknown entry '" << key << "' in dictionary "
-                << smd.name() << nl << "    Valid entries: "
-                << flatOutput(subModelKeys) << " and <model>Coeffs"
-                << exit(FatalIOError);
+            "particleForces", "injectionModels", "dispersionModel",
+            "patchInteractionModel", "stochasticCollisionModel",
+            "surfaceFilmModel", "collisionModel", "rotationModel",
+            "breakupModel"
         }
-    }
+    );
 
     rotationModel_.reset
     (
@@ -136,6 +124,19 @@ void Foam::HardSphereCloud<CloudType>::sortByCell()
 
 
 template<class CloudType>
+void Foam::HardSphereCloud<CloudType>::deleteRemoved()
+{
+    for (parcelType& p : *this)
+    {
+        if (p.stage().removed())
+        {
+            this->deleteParticle(p);
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::HardSphereCloud<CloudType>::debugSums(const char* phase) const
 {
     if (!HardSphereCollisionModel<hardSphereCloudType>::debug)
@@ -173,6 +174,7 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
 :
     CloudType(cloudName, rho, U, mu, g, false),
     keyedDispersion_(nullptr),
+    massBalance_(this->mesh(), cloudName),
     collisionModel_(nullptr),
     rotationModel_(nullptr),
     breakupModel_(nullptr),
@@ -204,6 +206,7 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
             breakupModel_->restartIds(nFragmentIds);
         }
         collisionModel_->checkParticles();
+        massBalance_.start(*this);
     }
 }
 
@@ -232,6 +235,7 @@ bool Foam::HardSphereCloud<CloudType>::writeObject
 ) const
 {
     const bool ok = CloudType::writeObject(fmt, ver, cmp, valid);
+    massBalance_.write();
     hardSphereCloudState::write
     (
         this->mesh(), this->name(), this->size(), nPrimaries(),
@@ -268,6 +272,10 @@ void Foam::HardSphereCloud<CloudType>::evolve()
         this->solve(*this, td);
 
         rotationModel_->releaseVorticity(vorticity);
+
+        // Nothing lost or made: in flight + deposited + escaped - injected
+        massBalance_.check(*this);
+        massBalance_.info(Info);
 
         // The whole cloud step: nothing hides outside the three timers
         // (the rest: vorticity, injection, forces set-up, sources, cloud
@@ -325,14 +333,7 @@ void Foam::HardSphereCloud<CloudType>::motion
         collisionModel_->collide();
         debugSums("collisions");
 
-        // Mark-then-delete
-        for (parcelType& p : *this)
-        {
-            if (p.stage().removed())
-            {
-                this->deleteParticle(p);
-            }
-        }
+        deleteRemoved();
 
         // Break-up of the agglomerates, in the state the collisions left
         breakupModel_->breakup(td);
@@ -355,10 +356,12 @@ void Foam::HardSphereCloud<CloudType>::motion
             CloudType::move(cloud, td, this->db().time().deltaTValue());
 
             // Agglomerates formed at a wall: out of it from their own place
+            // (or deposited there)
             if (collisionModel_->afterRelocation())
             {
                 CloudType::move(cloud, td, this->db().time().deltaTValue());
             }
+            deleteRemoved();
             td.part() = parcelType::trackingData::tpLinearTrack;
         }
 
@@ -366,7 +369,10 @@ void Foam::HardSphereCloud<CloudType>::motion
         debugSums("relocations");
 
         // The mass audit of the stage, in every run and build
-        collisionModel_->step().auditAfter(*this);
+        collisionModel_->step().auditAfter
+        (
+            *this, massBalance_.lostMass(), massBalance_.lostPrimaries()
+        );
     }
 
     // A written time is where a restart starts: the next step computes

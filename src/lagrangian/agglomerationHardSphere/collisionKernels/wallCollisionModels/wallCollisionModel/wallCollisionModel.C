@@ -42,10 +42,16 @@ namespace Foam
 Foam::wallCollisionModel::wallCollisionModel
 (
     const dictionary& dict,
-    const word& type
+    const word& type,
+    const bool coeffsOptional
 )
 :
-    coeffDict_(dict.subDict(type + "Coeffs"))
+    coeffDict_
+    (
+        coeffsOptional
+      ? dict.subOrEmptyDict(type + "Coeffs")
+      : dict.subDict(type + "Coeffs")
+    )
 {
     hardSphereInput::checkKeys(dict, {"wallModel", type + "Coeffs"});
 }

@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "AgglomerateParcel.H"
+#include "cloudMassBalance.H"
 #include "processorPolyPatch.H"
 #include "wallPolyPatch.H"
 #include "particleKeyedModel.H"
@@ -342,9 +343,11 @@ bool Foam::AgglomerateParcel<ParcelType>::hitPatch
 
     if (isA<wallPolyPatch>(pp))
     {
-        // The collision model's wall interaction, if it handles the patch
+        // The collision model's wall interaction, if it handles the patch;
+        // a deposited parcel leaves the cloud
         if (cloud.collision().hitWall(p, pp))
         {
+            td.keepParticle = !p.stage().removed();
             return true;
         }
 
@@ -362,7 +365,18 @@ bool Foam::AgglomerateParcel<ParcelType>::hitPatch
         }
     }
 
-    return ParcelType::hitPatch(cloud, td);
+    // The stock patch interaction: a parcel it removes (escape) enters
+    // the cloud's mass balance
+    const bool handled = ParcelType::hitPatch(cloud, td);
+    if (!td.keepParticle)
+    {
+        cloud.massBalance().lose
+        (
+            cloudMassBalance::ESCAPED, pp.index(), pp.whichFace(p.face()),
+            p.nPrimary(), p.nParticle()*p.mass()
+        );
+    }
+    return handled;
 }
 
 

@@ -87,7 +87,12 @@ Foam::scalar Foam::HardSphereCollision<CloudType>::gather()
     vector dxMax;
     label nPrimaries;
     tracked_.check(this->owner(), dMax, dxMag, dxMax, mass, nPrimaries);
-    this->step_.auditBefore(mass, nPrimaries);
+    // What left the cloud counts as kept (deposits in the stage)
+    const cloudMassBalance& balance = this->owner().massBalance();
+    this->step_.auditBefore
+    (
+        mass + balance.lostMass(), nPrimaries + balance.lostPrimaries()
+    );
 
     return search_->checkedDistance
     (
@@ -174,7 +179,11 @@ Foam::HardSphereCollision<CloudType>::HardSphereCollision
 :
     HardSphereCollisionModel<CloudType>(dict, owner, typeName),
     kernel_(this->coeffDict()),
-    walls_(this->coeffDict(), owner.U(), owner.keyedDispersion()),
+    walls_
+    (
+        this->coeffDict(), owner.U(), owner.keyedDispersion(),
+        owner.massBalance()
+    ),
     memory_(this->coeffDict()),
     search_
     (

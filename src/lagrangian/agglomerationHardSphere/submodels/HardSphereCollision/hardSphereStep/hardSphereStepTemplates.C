@@ -51,12 +51,17 @@ void Foam::hardSphereStep::globalSums
 
 
 template<class CloudType>
-void Foam::hardSphereStep::auditAfter(const CloudType& cloud) const
+void Foam::hardSphereStep::auditAfter
+(
+    const CloudType& cloud,
+    const scalar lostMass,
+    const label lostPrimaries
+) const
 {
     scalar mass;
     label nPrimaries;
     globalSums(cloud, mass, nPrimaries);
-    audit(mass, nPrimaries);
+    audit(mass + lostMass, nPrimaries + lostPrimaries);
 }
 
 

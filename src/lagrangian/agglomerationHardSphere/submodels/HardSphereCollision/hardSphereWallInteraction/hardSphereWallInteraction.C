@@ -51,27 +51,48 @@ Foam::hardSphereWallInteraction::correctionNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::hardSphereWallInteraction::impact
+Foam::hardSphereWallInteraction::resultType
+Foam::hardSphereWallInteraction::contact
 (
     const label patchi,
+    const label patchFacei,
     const vector& nw,
-    const vector& Uw,
     particle& p,
     const scalar eventFraction
 ) const
 {
-    p.impactSpeed = -((p.U - Uw) & nw);
+    const vector& Uw = Uc_.boundaryField()[patchi][patchFacei];
+    const wallCollisionModel& model = models_[patchi];
     keyedRandom rnd
     (
         randomSeed_, randomStreams::wallImpact, p.origProc, p.origId,
         mesh_.time().timeIndex(), eventFraction
     );
-    models_[patchi].impact(nw, Uw, p.d, p.U, p.omega, rnd);
+
+    if (model.deposits(nw, Uw, p.d, p.U, rnd))
+    {
+        balance_.lose
+        (
+            cloudMassBalance::DEPOSITED, patchi, patchFacei, p.nPrimary,
+            p.mass
+        );
+        p.deposited = true;
+        return DEPOSIT;
+    }
+
+    if (((p.U - Uw) & nw) >= 0)
+    {
+        return OVERLAP;
+    }
+
+    p.impactSpeed = -((p.U - Uw) & nw);
+    model.impact(nw, Uw, p.d, p.U, p.omega, rnd);
 
     if (reflectSGS_ && p.UTurb)
     {
         particleKeyedModel::reflect(*p.UTurb, nw);
     }
+    return IMPACT;
 }
 
 
@@ -81,11 +102,13 @@ Foam::hardSphereWallInteraction::hardSphereWallInteraction
 (
     const dictionary& dict,
     const volVectorField& Uc,
-    const particleKeyedModel* keyedDispersion
+    const particleKeyedModel* keyedDispersion,
+    cloudMassBalance& balance
 )
 :
     mesh_(Uc.mesh()),
     Uc_(Uc),
+    balance_(balance),
     models_(),
     contact_(contactNames.getOrDefault("wallContact", dict, RADIUS)),
     correction_
@@ -127,6 +150,10 @@ Foam::hardSphereWallInteraction::hardSphereWallInteraction
             << ePtr->dict().get<word>("wallModel") << endl;
 
         models_.set(patchi, wallCollisionModel::New(ePtr->dict()));
+        if (models_[patchi].depositing())
+        {
+            balance_.depositsOn(patchi);
+        }
     }
 
     // Every entry of walls names at least one wall patch and is a valid
@@ -244,36 +271,34 @@ Foam::hardSphereWallInteraction::contactAtRadius
         nw = -pp.faceNormals()[patchFacei];
     }
 
-    const vector& Uw = Uc_.boundaryField()[patchi][patchFacei];
-    const scalar un = (p.U - Uw) & nw;
-    const bool reflect = (correction_ == REFLECT);
+    const vector U0(p.U);
+    const resultType result = contact(patchi, patchFacei, nw, p, 2.0);
 
-    if (un < 0)
+    if (result == DEPOSIT || correction_ != REFLECT)
     {
-        const vector U0(p.U);
-        impact(patchi, nw, Uw, p, 2.0);
-
-        if (reflect)
-        {
-            // Back to the contact, then on with the new velocity
-            const scalar tau = min((r - h)/(-un), dt);
-            xNew = x + tau*(p.U - U0);
-            moved = true;
-        }
-        return IMPACT;
+        return result;
     }
 
-    if (reflect)
+    moved = true;
+    if (result == IMPACT)
+    {
+        // Back to the contact, then on with the new velocity
+        const vector& Uw = Uc_.boundaryField()[patchi][patchFacei];
+        const scalar un = (U0 - Uw) & nw;
+        const scalar tau = min((r - h)/(-un), dt);
+        xNew = x + tau*(p.U - U0);
+    }
+    else
     {
         // Overlapping without approaching: out to one radius
         xNew = x + (r - h)*nw;
-        moved = true;
     }
-    return OVERLAP;
+    return result;
 }
 
 
-bool Foam::hardSphereWallInteraction::hitCentre
+Foam::hardSphereWallInteraction::resultType
+Foam::hardSphereWallInteraction::hitCentre
 (
     const label facei,
     particle& p,
@@ -284,16 +309,12 @@ bool Foam::hardSphereWallInteraction::hitCentre
     const label patchi = pbm.whichPatch(facei);
     const polyPatch& pp = pbm[patchi];
     const label patchFacei = pp.whichFace(facei);
-    const vector nw(-pp.faceNormals()[patchFacei]);
-    const vector& Uw = Uc_.boundaryField()[patchi][patchFacei];
 
-    if (((p.U - Uw) & nw) < 0)
-    {
-        impact(patchi, nw, Uw, p, f);
-        return true;
-    }
+    const resultType result =
+        contact(patchi, patchFacei, -pp.faceNormals()[patchFacei], p, f);
 
-    return false;
+    // Moving away from the face: nothing happens
+    return result == OVERLAP ? NO_CONTACT : result;
 }
 
 

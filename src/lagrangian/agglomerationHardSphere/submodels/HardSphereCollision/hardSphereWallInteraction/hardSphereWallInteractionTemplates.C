@@ -35,7 +35,8 @@ Foam::hardSphereWallInteraction::wallParticle(ParcelType& p)
 {
     return particle
     {
-        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb(), 0
+        p.origProc(), p.origId(), p.d(), p.U(), p.omega(), &p.UTurb(), 0,
+        p.nPrimary(), p.nParticle()*p.mass(), false
     };
 }
 
@@ -59,6 +60,11 @@ bool Foam::hardSphereWallInteraction::contactAtRadius
             x, search.wallFaces(p.cell(), 0.5*p.d()), dt, wp, moved, xNew
         );
 
+    if (result == DEPOSIT)
+    {
+        p.stage().markRemoved();
+        return false;
+    }
     if (moved)
     {
         p.stage().relocateTo(xNew);
@@ -75,7 +81,12 @@ template<class ParcelType>
 bool Foam::hardSphereWallInteraction::hitCentre(ParcelType& p) const
 {
     particle wp(wallParticle(p));
-    if (hitCentre(p.face(), wp, p.stepFraction()))
+    const resultType result = hitCentre(p.face(), wp, p.stepFraction());
+    if (result == DEPOSIT)
+    {
+        p.stage().markRemoved();
+    }
+    else if (result == IMPACT)
     {
         p.stage().noteWallImpact(wp.impactSpeed);
         return true;
