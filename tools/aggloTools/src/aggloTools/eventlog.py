@@ -45,6 +45,8 @@ RHO_RANGE = (1e-3, 1e6)          # kg/m3
 X_MAX, U_MAX, OMEGA_MAX = 1e6, 1e4, 1e12   # per component
 #: The origProc of the parcels break-up makes (fragmentIds::origProc)
 FRAGMENT_PROC = -2
+#: The origProc of injected parcels (particleIds::injected)
+INJECTED_PROC = -3
 
 
 def invalid_record(r, nb):
@@ -69,9 +71,11 @@ def invalid_record(r, nb):
         return f"wall distance {r['wallDistance']:g} (valid: finite, >= 0)"
     for k in (1, 2):
         proc, pid = r[f"proc{k}"], r[f"id{k}"]
-        if (proc < 0 and proc != FRAGMENT_PROC) or pid < 0:
+        if (proc < 0 and proc not in (FRAGMENT_PROC, INJECTED_PROC)) \
+                or pid < 0:
             return (f"partner {k}: origProc {proc}, origId {pid} (valid: "
-                    "origProc a rank >= 0 or -2 (a fragment), origId >= 0)")
+                    "origProc a rank >= 0, -2 (a fragment) or -3 "
+                    "(injected), origId >= 0)")
     for k in (1, 2):
         d, rho = r[f"d{k}"], r[f"rho{k}"]
         if not D_RANGE[0] <= d <= D_RANGE[1]:
@@ -107,7 +111,8 @@ def check_records(records, path, nb):
                    & (r["wallDistance"] >= 0)))
         for k in (1, 2):
             proc = r[f"proc{k}"]
-            bad |= ((proc < 0) & (proc != FRAGMENT_PROC)) | (r[f"id{k}"] < 0)
+            bad |= ((proc < 0) & (proc != FRAGMENT_PROC)
+                    & (proc != INJECTED_PROC)) | (r[f"id{k}"] < 0)
             d, rho = r[f"d{k}"], r[f"rho{k}"]
             bad |= ~((d >= D_RANGE[0]) & (d <= D_RANGE[1]))
             bad |= ~((rho >= RHO_RANGE[0]) & (rho <= RHO_RANGE[1]))

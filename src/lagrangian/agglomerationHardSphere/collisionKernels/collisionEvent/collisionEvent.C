@@ -26,6 +26,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionEvent.H"
+#include "particleIds.H"
 #include "eventRecord.H"
 #include <cmath>
 #include <sstream>
@@ -180,12 +181,12 @@ std::string Foam::collisionEvent::invalid
     }
     for (label k = 0; k < 2 && os.str().empty(); ++k)
     {
-        // A rank's number, or the fragments' (fragmentIds::origProc, -2)
-        if ((e.proc[k] < 0 && e.proc[k] != -2) || e.id[k] < 0)
+        // A rank's number, or the fragments' or injected parcels'
+        if (!Foam::particleIds::valid(e.proc[k]) || e.id[k] < 0)
         {
             os << "partner " << k + 1 << ": origProc " << e.proc[k]
-               << ", origId " << e.id[k] << " (valid: origProc a rank >= 0"
-               << " or -2 (a fragment), origId >= 0)";
+               << ", origId " << e.id[k] << " (valid: origProc a rank >= 0,"
+               << " -2 (a fragment) or -3 (injected), origId >= 0)";
         }
     }
     for (const Foam::hardSphereState* p : {&e.p1, &e.p2})

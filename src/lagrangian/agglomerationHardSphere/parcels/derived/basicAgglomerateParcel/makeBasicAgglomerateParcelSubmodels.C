@@ -50,6 +50,7 @@ License
 #include "FluidTorqueRotation.H"
 #include "NoAgglomerateBreakup.H"
 #include "AgglomerateBreakup.H"
+#include "KeyedPatchInjection.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -68,6 +69,7 @@ makeParticleForceModelType(SchillerNaumannDragForce, basicAgglomeratingCloud);
 makeParticleForceModelType(RotationLiftForce, basicAgglomeratingCloud);
 makeDispersionModelType(PozorskiApteDispersion, basicAgglomeratingCloud);
 makeCloudFunctionObjectType(HardSphereStatistics, basicAgglomeratingCloud);
+makeInjectionModelType(KeyedPatchInjection, basicAgglomeratingCloud);
 
 // The collision stage
 makeHardSphereCollisionModel(basicAgglomeratingCloud);
