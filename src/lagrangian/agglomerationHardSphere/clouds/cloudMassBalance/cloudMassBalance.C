@@ -88,7 +88,7 @@ void Foam::cloudMassBalance::read()
         for (const entry& e : dict)
         {
             const label patchi = pbm.findPatchID(e.keyword());
-            if (patchi < 0 || !e.isDict())
+            if (patchi < 0 || patchi >= pbm.nNonProcessor() || !e.isDict())
             {
                 FatalIOErrorInFunction(dict)
                     << "Cloud " << cloudName_ << ": the record names '"
@@ -158,7 +158,8 @@ Foam::cloudMassBalance::cloudMassBalance
     nPrimariesStart_(0),
     restarted_(false)
 {
-    const label nPatches = mesh.boundaryMesh().size();
+    // The patches every rank has (processor patches come after them)
+    const label nPatches = mesh.boundaryMesh().nNonProcessor();
     forAll(nParcels_, typei)
     {
         nParcels0_[typei].setSize(nPatches, 0);
@@ -289,7 +290,7 @@ void Foam::cloudMassBalance::write() const
         Pstream::listCombineScatter(mass);
 
         dictionary dict;
-        forAll(pbm, patchi)
+        forAll(nParcels, patchi)
         {
             const label n = nParcels0_[typei][patchi] + nParcels[patchi];
             if (n == 0)
@@ -323,7 +324,7 @@ void Foam::cloudMassBalance::info(Ostream& os) const
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     forAll(lossNames, typei)
     {
-        forAll(pbm, patchi)
+        forAll(nParcels_[typei], patchi)
         {
             const label n =
                 nParcels0_[typei][patchi]
