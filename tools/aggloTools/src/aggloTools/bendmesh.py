@@ -205,3 +205,36 @@ def run_pipe_case(case, g, parallel=0, check=True):
         return res
     return run([foam_bin("aggloPimpleFoam")], case, "log.aggloPimpleFoam",
                check=check)
+
+
+def developed_inlet(case, g, U_mean):
+    """The developed laminar inflow (Hagen-Poiseuille, (1 - r^2/a^2)
+    along +z) at the inlet's face centres, scaled so that the flux is
+    U_mean times the inlet's area exactly (the midpoint rule alone gives
+    about 1 % more at 8 core cells), written into 0/U's inlet as a
+    nonuniform fixedValue (after blockMesh; the inlet is not moved by the
+    bend). Returns the volumetric flux through the inlet."""
+    import re
+    from .mesh import Mesh
+    case = Path(case)
+    text = (case / "constant/polyMesh/boundary").read_text()
+    m = re.search(r"\binlet\s*\{[^}]*?nFaces\s+(\d+);[^}]*?startFace\s+"
+                  r"(\d+);", text)
+    n, start = int(m.group(1)), int(m.group(2))
+    Cf, Sf = Mesh(case).face_centres_and_areas()
+    r2 = (Cf[start:start + n, :2] ** 2).sum(axis=1)
+    area = np.linalg.norm(Sf[start:start + n], axis=1)
+    shape = np.clip(1 - r2 / g.a ** 2, 0, None)
+    w = U_mean * area.sum() / (shape @ area) * shape
+    U = np.zeros((n, 3))
+    U[:, 2] = w
+    f = case / "0" / "U"
+    body = f.read_text()
+    value = "nonuniform List<vector> " + list_body(U, "%.17g")
+    new, k = re.subn(r"inlet \{ type fixedValue; value uniform \([^)]*\); \}",
+                     lambda _: f"inlet {{ type fixedValue; value {value}; }}",
+                     body)
+    if k != 1:
+        raise ValueError(f"{f}: no uniform fixedValue inlet to replace")
+    f.write_text(new)
+    return float(w @ area)
