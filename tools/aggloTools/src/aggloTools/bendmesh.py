@@ -191,20 +191,9 @@ def pipe_case(case, g, n=8, n_ring=4, n_axial=(20, 30, 20),
 def run_pipe_case(case, g, parallel=0, check=True):
     """blockMesh, the bend's points, then the solver (serial, or
     decomposed on N ranks and reconstructed)."""
-    from .runner import foam_bin, run
-    run([foam_bin("blockMesh")], case, "log.blockMesh")
-    bend_points(case, g)
-    if parallel:
-        run([foam_bin("decomposePar"), "-force"], case, "log.decomposePar")
-        res = run(["mpirun", "-np", str(parallel), "--oversubscribe",
-                   foam_bin("aggloPimpleFoam"), "-parallel"], case,
-                  "log.aggloPimpleFoam", check=check)
-        if check:
-            run([foam_bin("reconstructPar"), "-latestTime"], case,
-                "log.reconstructPar")
-        return res
-    return run([foam_bin("aggloPimpleFoam")], case, "log.aggloPimpleFoam",
-               check=check)
+    from .boxcase import run_case
+    return run_case(case, parallel, check,
+                    after_mesh=lambda: bend_points(case, g))
 
 
 def developed_inlet(case, g, U_mean):

@@ -211,9 +211,13 @@ def write_particles(case, particles):
         ids=[p.get("id", i) for i, p in enumerate(P)])
 
 
-def run_case(case, parallel=0, check=True):
-    """blockMesh, then the solver (serial, or decomposed on N ranks)."""
+def run_case(case, parallel=0, check=True, after_mesh=None):
+    """blockMesh (then after_mesh(), if given: e.g. a mapping of the
+    points), then the solver (serial, or decomposed on N ranks and
+    reconstructed)."""
     run([foam_bin("blockMesh")], case, "log.blockMesh")
+    if after_mesh:
+        after_mesh()
     if parallel:
         # decomposePar writes barycentric coordinates but copies the
         # uniform cloudProperties that announce the legacy positions file:

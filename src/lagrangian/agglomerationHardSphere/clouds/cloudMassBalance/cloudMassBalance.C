@@ -104,14 +104,15 @@ void Foam::cloudMassBalance::read()
 }
 
 
-Foam::scalar Foam::cloudMassBalance::total
+template<class Type>
+Type Foam::cloudMassBalance::total
 (
-    const FixedList<scalarList, 2>& local,
-    const FixedList<scalarList, 2>& start
-) const
+    const FixedList<List<Type>, 2>& local,
+    const FixedList<List<Type>, 2>& start
+)
 {
-    scalar sum = 0;
-    scalar sum0 = 0;
+    Type sum = 0;
+    Type sum0 = 0;
     forAll(local, typei)
     {
         forAll(local[typei], patchi)
@@ -120,27 +121,7 @@ Foam::scalar Foam::cloudMassBalance::total
             sum0 += start[typei][patchi];
         }
     }
-    return sum0 + returnReduce(sum, sumOp<scalar>());
-}
-
-
-Foam::label Foam::cloudMassBalance::total
-(
-    const FixedList<labelList, 2>& local,
-    const FixedList<labelList, 2>& start
-) const
-{
-    label sum = 0;
-    label sum0 = 0;
-    forAll(local, typei)
-    {
-        forAll(local[typei], patchi)
-        {
-            sum += local[typei][patchi];
-            sum0 += start[typei][patchi];
-        }
-    }
-    return sum0 + returnReduce(sum, sumOp<label>());
+    return sum0 + returnReduce(sum, sumOp<Type>());
 }
 
 
