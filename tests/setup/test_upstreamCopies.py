@@ -18,7 +18,7 @@ ROOT = project_dir()
 #: (our copy, the upstream file under src/, the upstream function)
 COPIES = [
     ("src/lagrangian/agglomerationHardSphere/parcels/Templates/"
-     "AgglomerateParcel/AgglomerateParcel.C",
+     "AgglomerateParcel/AgglomerateParcelTracking.C",
      "lagrangian/intermediate/parcels/Templates/KinematicParcel/"
      "KinematicParcel.C",
      "bool Foam::KinematicParcel<ParcelType>::move"),
