@@ -96,7 +96,8 @@ def test_second_driver_on_a_run_folder_refused(tmp_path, foam_env,
 @pytest.mark.parametrize("script", ["Allrun",
                                     "tutorials/verticalChannel/Allrun",
                                     "tutorials/shearFlowValidation/Allrun",
-                                    "tutorials/breakupShear/Allrun"])
+                                    "tutorials/breakupShear/Allrun",
+                                    "tutorials/bendDeposition/Allrun"])
 def test_started_by_bash_or_through_a_link(tmp_path, foam_env, script):
     """`bash Allrun` and a link to an Allrun start in the script's own
     folder (they failed: 'cd: Allrun: Not a directory', or ran in the

@@ -23,10 +23,11 @@ SHELL = [
     (ROOT, ["bin/aggloSetup", "-h"], "aggloSetup"),
 ] + [(TUT / t, ["./Allrun", "-help"], w) for t, w in (
     ("verticalChannel", "-preset"), ("shearFlowValidation", "-preset"),
-    ("breakupShear", "-preset"), ("laminarChannel", "no options"))] + [
+    ("breakupShear", "-preset"), ("bendDeposition", "-preset"),
+    ("laminarChannel", "no options"))] + [
     (TUT / t, ["./Allclean", "-help"], "No options") for t in (
         "verticalChannel", "shearFlowValidation", "breakupShear",
-        "laminarChannel")]
+        "bendDeposition", "laminarChannel")]
 
 PYTHON = [
     ("verticalChannel", "channel.py", "settings"),
@@ -42,6 +43,7 @@ PYTHON = [
     ("shearFlowValidation", "shearStudy.py", "list"),
     ("shearFlowValidation", "shearRuns.py", "-preset"),
     ("breakupShear", "breakupShear.py", "-preset"),
+    ("bendDeposition", "bendDeposition.py", "-preset"),
     ("laminarChannel", "checkPoiseuille.py", "usage"),
 ]
 #: The benchmarks a user starts (bench/; the others are their modules)

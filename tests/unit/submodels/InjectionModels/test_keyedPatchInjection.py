@@ -27,7 +27,9 @@ ESCAPE = ("patchInteractionModel localInteraction;\n"
 NO_WALLS = KERNEL + "    agglomerationModel none;\n    walls {}\n"
 
 
-def injector(pps, duration, U0=(0.05, 0, 0), extra=""):
+def injector(pps, duration, U0=(0.05, 0, 0), extra="", placement="area"):
+    velocity = (f"U0              ({U0[0]} {U0[1]} {U0[2]});"
+                if placement == "area" else "")
     return f"""injectionModels
     {{
         inlet
@@ -37,7 +39,8 @@ def injector(pps, duration, U0=(0.05, 0, 0), extra=""):
             SOI             0;
             duration        {duration!r};
             parcelsPerSecond {pps!r};
-            U0              ({U0[0]} {U0[1]} {U0[2]});
+            placement       {placement};
+            {velocity}
             massTotal       0;
             parcelBasisType fixed;
             nParticle       1;
@@ -53,7 +56,7 @@ def injector(pps, duration, U0=(0.05, 0, 0), extra=""):
 
 def injection_case(case, pps=2e4, duration=1e-3, end_time=4e-3,
                    write_interval=10, U0=(0.05, 0, 0), extra="",
-                   n=(4, 4, 4), decompose=(1, 1, 1)):
+                   n=(4, 4, 4), decompose=(1, 1, 1), placement="area"):
     """An open box (every side a patch; escape everywhere), inlet xMin."""
     box_case(case, L=(L, L, L), n=n, kinds=("patch", "patch", "patch"),
              dt=1e-4, end_time=end_time, write_interval=write_interval,
@@ -61,7 +64,8 @@ def injection_case(case, pps=2e4, duration=1e-3, end_time=4e-3,
              decompose=decompose)
     f = case / "constant" / "kinematicCloudProperties"
     f.write_text(f.read_text().replace(
-        "injectionModels {}", injector(pps, duration, U0, extra)))
+        "injectionModels {}", injector(pps, duration, U0, extra,
+                                       placement)))
     return case
 
 
@@ -109,6 +113,34 @@ def test_spread_over_the_patch_is_uniform(case_dir, foam_env):
     fz = (x[:, 2] / (L / 4)) % 1 < 0.5
     q = np.bincount(2 * fz + fy, minlength=4)
     assert sps.chisquare(q).pvalue > 1e-3, q
+
+
+def test_flux_placement_follows_the_inflow(case_dir, foam_env):
+    """placement flux: the carrier enters through xMin at u = 0.1 m/s
+    times (j + 0.5)/4 in the j-th row of faces (y): 1600 parcels at rest
+    in a frozen flow spread over the rows as 1:3:5:7 (chi-square, p >
+    0.001), each at the velocity of its face."""
+    injection_case(case_dir, pps=1.6e7, duration=1e-4, end_time=1e-4,
+                   write_interval=1, placement="flux")
+    from aggloTools.boxcase import write_internal_U
+    write_internal_U(case_dir, (L, L, L), (4, 4, 4),
+                     lambda x, y, z: (0.1 * (int(y / (L / 4)) + 0.5) / 4,
+                                      0, 0))
+    run_case(case_dir)
+    c = read_cloud(case_dir, "0.0001", names=("U", "lastPartnerId"))
+    x = read_positions(cloud_dir(case_dir, "0.0001") / "positions")
+    row = np.minimum((x[:, 1] / (L / 4)).astype(int), 3)
+    counts = np.bincount(row, minlength=4)
+    assert counts.sum() == 1600
+    expected = 1600 * np.array([1, 3, 5, 7]) / 16
+    assert sps.chisquare(counts, expected).pvalue > 1e-3, counts
+    # U0 absent: each parcel at its face's velocity (no forces; those
+    # that collided with another, packed on the inlet plane, aside)
+    free = c["lastPartnerId"] == -1
+    assert free.sum() > 500
+    np.testing.assert_allclose(c["U"][free, 0],
+                               0.1 * (row[free] + 0.5) / 4, rtol=1e-12)
+    np.testing.assert_array_equal(c["U"][free, 1:], 0)
 
 
 def test_restart_continues_exactly(case_dir, foam_env):
@@ -165,8 +197,11 @@ def test_two_ranks_inject_the_same_particles(case_dir, foam_env):
     ("parcelsPerSecond", "flowRateProfile constant 1; parcelsPerSecond",
      "flowRateProfile"),
     ("duration        0.001;", "duration        0;", "duration"),
+    ("placement       area;", "", "placement"),
+    ("placement       area;", "placement       flux;", "U0"),
+    ("placement       area;", "placement       even;", "even"),
 ], ids=["basisMass", "nParticle3", "patchName", "flowRateProfile",
-        "durationZero"])
+        "durationZero", "placementMissing", "fluxWithU0", "placementName"])
 def test_bad_injector_input(case_dir, foam_env, old, new, word):
     injection_case(case_dir, end_time=2e-4)
     f = case_dir / "constant" / "kinematicCloudProperties"

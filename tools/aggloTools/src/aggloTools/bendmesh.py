@@ -152,17 +152,20 @@ def bend_points(case, g):
 
 
 def pipe_case(case, g, n=8, n_ring=4, n_axial=(20, 30, 20),
-              inlet_velocity=(0, 0, 0), ranks=(1, 1, 1), **box):
+              inlet_velocity=(0, 0, 0), ranks=(1, 1, 1), ring_grading=1.0,
+              **box):
     """A complete case on the pipe (aggloTools.boxcase.box_case for the
     rest: box's keyword arguments, e.g. particles, hard_sphere,
     patch_interaction, dt, end_time): the mesh, U and p with the inlet's
     velocity, a zero-gradient outlet and still walls, and a hierarchical
-    decomposition into ranks (x, y, z): (1, 2, 1) cuts the whole pipe
+    decomposition into ranks (x, y, z) (ring_grading: the ring blocks'
+    last cell over their first, below 1 finer at the wall): (1, 2, 1)
+    cuts the whole pipe
     along its plane of symmetry y = 0, through every cross-section (scotch
     and metis are dummy libraries in Debian's OpenFOAM v1912)."""
     from .boxcase import box_case
     box_case(case, kinds=("patch", "patch", "patch"), **box)
-    write_block_mesh(case, g, n, n_ring, n_axial)
+    write_block_mesh(case, g, n, n_ring, n_axial, ring_grading)
     nx, ny, nz = ranks
     write_foamfile(Path(case) / "system/decomposeParDict", "dictionary",
                    "system", "decomposeParDict",

@@ -42,7 +42,8 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              dispersion="dispersionModel none;", coupled=False,
              turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2,
              frozen=True, tol=1e-8, source_scheme="semiImplicit 1",
-             patch_interaction="patchInteractionModel none;", breakup=""):
+             patch_interaction="patchInteractionModel none;", breakup="",
+             integration="Euler"):
     """Write a complete case. kinds: 'wall', 'cyclic' or 'patch' (open)
     per direction.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
@@ -52,7 +53,9 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
     rotation: rotationModel fluidTorque (else none); dispersion: the
     dispersionModel entry (plus its coefficients); turbulence: the body
     of constant/turbulenceProperties; breakup: the breakupModel entry and
-    its coefficients (default: none, by its absence)."""
+    its coefficients (default: none, by its absence); integration: the
+    particle velocity's scheme (Euler, or analytical for particles whose
+    relaxation time is below the step)."""
     case = Path(case)
     steps = round(end_time / dt)
     write_interval = write_interval or steps
@@ -163,7 +166,7 @@ def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              "    sourceTerms { schemes { U " + source_scheme + "; } }\n"
              "    interpolationSchemes { rho cell; U cellPoint; mu cell;"
              " curlUcDt cellPoint; }\n"
-             "    integrationSchemes { U Euler; }\n}\n"
+             f"    integrationSchemes {{ U {integration}; }}\n}}\n"
              "constantProperties { rho0 2200; }\n"
              "subModels\n{\n    particleForces " + forces + "\n"
              "    injectionModels {}\n    " + dispersion + "\n"

@@ -31,6 +31,20 @@ License
 #include "particleIds.H"
 #include "hardSphereInput.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::Enum
+<
+    typename Foam::KeyedPatchInjection<CloudType>::placementType
+>
+Foam::KeyedPatchInjection<CloudType>::placementNames
+({
+    { placementType::AREA, "area" },
+    { placementType::FLUX, "flux" },
+});
+
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -92,10 +106,12 @@ Foam::KeyedPatchInjection<CloudType>::KeyedPatchInjection
             hardSphereInput::open(0), hardSphereInput::open(GREAT)
         )
     ),
-    U0_(this->coeffDict().template get<vector>("U0")),
+    placement_(placementNames.get("placement", this->coeffDict())),
+    U0_(Zero),
+    face_(-1),
     seed_(hardSphereInput::getSeed(this->coeffDict())),
     nameKey_(nameKey(modelName)),
-    triangles_(owner.mesh(), patchi_),
+    triangles_(owner.mesh(), patchi_, faceWeights()),
     sizeRnd_(0),
     sizeDistribution_
     (
@@ -110,11 +126,24 @@ Foam::KeyedPatchInjection<CloudType>::KeyedPatchInjection
     (
         this->coeffDict(),
         {
-            "type", "patch", "SOI", "duration", "parcelsPerSecond", "U0",
-            "massTotal", "parcelBasisType", "nParticle", "randomSeed",
-            "sizeDistribution"
+            "type", "patch", "SOI", "duration", "parcelsPerSecond",
+            "placement", "massTotal", "parcelBasisType", "nParticle",
+            "randomSeed", "sizeDistribution",
+            placement_ == AREA ? "U0" : "placement"
         }
     );
+    if (placement_ == AREA)
+    {
+        this->coeffDict().readEntry("U0", U0_);
+    }
+    if (!(triangles_.area() > 0))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Injector " << modelName << ": no inflow through patch "
+            << owner.mesh().boundaryMesh()[patchi_].name()
+            << " (placement flux needs the carrier to enter there)"
+            << exit(FatalIOError);
+    }
 
     // One particle per parcel: a hard-sphere parcel is one particle
     if
@@ -144,13 +173,34 @@ Foam::KeyedPatchInjection<CloudType>::KeyedPatchInjection
     patchi_(im.patchi_),
     duration_(im.duration_),
     parcelsPerSecond_(im.parcelsPerSecond_),
+    placement_(im.placement_),
     U0_(im.U0_),
+    face_(-1),
     seed_(im.seed_),
     nameKey_(im.nameKey_),
     triangles_(im.triangles_),
     sizeRnd_(im.sizeRnd_),
     sizeDistribution_(im.sizeDistribution_->clone())
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::tmp<Foam::scalarField>
+Foam::KeyedPatchInjection<CloudType>::faceWeights() const
+{
+    const polyPatch& pp = this->owner().mesh().boundaryMesh()[patchi_];
+    if (placement_ == AREA)
+    {
+        return tmp<scalarField>::New(pp.size(), scalar(1));
+    }
+
+    // The inflow per area: minus the carrier's velocity along the outward
+    // normal, none where it leaves
+    const vectorField& Up = this->owner().U().boundaryField()[patchi_];
+    return max(-(Up & pp.faceNormals()), scalar(0));
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -222,6 +272,7 @@ void Foam::KeyedPatchInjection<CloudType>::setPositionAndCell
 
     tetFacei = -1;
     tetPti = -1;
+    face_ = facei;
     if (facei < 0)
     {
         // Another rank's face
@@ -247,7 +298,10 @@ void Foam::KeyedPatchInjection<CloudType>::setProperties
     typename CloudType::parcelType& parcel
 )
 {
-    parcel.U() = U0_;
+    parcel.U() =
+        placement_ == AREA
+      ? U0_
+      : this->owner().U().boundaryField()[patchi_][face_];
 
     keyedRandom rnd
     (

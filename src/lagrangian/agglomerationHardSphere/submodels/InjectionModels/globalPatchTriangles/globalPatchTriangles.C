@@ -35,7 +35,8 @@ License
 Foam::globalPatchTriangles::globalPatchTriangles
 (
     const polyMesh& mesh,
-    const label patchi
+    const label patchi,
+    const scalarField& faceWeights
 )
 {
     const polyPatch& pp = mesh.boundaryMesh()[patchi];
@@ -44,6 +45,7 @@ Foam::globalPatchTriangles::globalPatchTriangles
     // This rank's triangles: a fan about each face's first point
     DynamicList<point> localPoints;
     DynamicList<label> localFaces;
+    DynamicList<scalar> localWeights;
     forAll(pp, facei)
     {
         const face& f = pp[facei];
@@ -53,27 +55,37 @@ Foam::globalPatchTriangles::globalPatchTriangles
             localPoints.append(meshPoints[f[i]]);
             localPoints.append(meshPoints[f[i + 1]]);
             localFaces.append(facei);
+            localWeights.append
+            (
+                faceWeights.empty() ? scalar(1) : faceWeights[facei]
+            );
         }
     }
 
     // All ranks' triangles on every rank
     List<List<point>> allPoints(Pstream::nProcs());
     List<labelList> allFaces(Pstream::nProcs());
+    List<scalarList> allWeights(Pstream::nProcs());
     allPoints[Pstream::myProcNo()] = localPoints;
     allFaces[Pstream::myProcNo()] = localFaces;
+    allWeights[Pstream::myProcNo()] = localWeights;
     Pstream::gatherList(allPoints);
     Pstream::scatterList(allPoints);
     Pstream::gatherList(allFaces);
     Pstream::scatterList(allFaces);
+    Pstream::gatherList(allWeights);
+    Pstream::scatterList(allWeights);
 
     DynamicList<point> pts;
     DynamicList<label> procs;
     DynamicList<label> faces;
+    DynamicList<scalar> weights;
     forAll(allFaces, proci)
     {
         pts.append(allPoints[proci]);
         procs.append(labelList(allFaces[proci].size(), proci));
         faces.append(allFaces[proci]);
+        weights.append(allWeights[proci]);
     }
 
     // The order of the centroids (x, then y, then z): the same on every
@@ -111,7 +123,9 @@ Foam::globalPatchTriangles::globalPatchTriangles
         {
             points_[3*i + k] = pts[3*t + k];
         }
-        sum += triPointRef(pts[3*t], pts[3*t + 1], pts[3*t + 2]).mag();
+        sum +=
+            weights[t]
+           *triPointRef(pts[3*t], pts[3*t + 1], pts[3*t + 2]).mag();
         cumulativeArea_[i] = sum;
         proc_[i] = procs[t];
         face_[i] = faces[t];
