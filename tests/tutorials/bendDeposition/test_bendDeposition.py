@@ -30,8 +30,8 @@ def test_stokes_number_diameter():
 
 def row(st, eta, n=1000, flight=0, injected=1000):
     return dict(St=st, eta=eta, sigma=math.sqrt(eta * (1 - eta) / n),
-                entered=n, inFlight=flight, injected=injected,
-                expected=1000)
+                entered=n, inFlight=flight, undecided=flight,
+                injected=injected, expected=1000)
 
 
 def test_gate_verdicts():
@@ -75,7 +75,8 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
                    + sum(r["escaped"].values()))
         assert counted == r["injected"] == 300
         assert r["entered"] == (300 - r["deposited"].get("inletPipe", 0)
-                                - r["inFlight"])
+                                - r["undecided"])
+        assert 0 <= r["undecided"] <= r["inFlight"]
         assert r["eta"] == pytest.approx(
             r["deposited"].get("bend", 0) / r["entered"], rel=1e-12)
     for png in ("efficiency.png", "deposits.png"):
