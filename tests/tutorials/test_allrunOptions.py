@@ -24,6 +24,8 @@ CASES = [
     ("shearFlowValidation", ["-preset"], "-preset needs a value"),
     ("shearFlowValidation", ["-j", "0"], "not a positive number"),
     ("shearFlowValidation", ["-every", "x"], "not a positive number"),
+    ("bendDeposition", ["-np", "1000"], "-np 1000 is more than the"),
+    ("bendDeposition", ["-preset", "bogus"], "invalid choice: 'bogus'"),
 ]
 
 

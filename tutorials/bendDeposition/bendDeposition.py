@@ -8,9 +8,12 @@ over the inlet with the inflow (keyedPatchInjection, placement flux: a
 uniform concentration in the incoming air) at the air's velocity there,
 one-way coupled, Schiller-Naumann drag, no gravity, no
 collisions between them (dilute), until every particle has deposited or
-left.
+left. The preset `agglomeration` is the dense variant: one run of
+polydisperse primaries with the collision stage and EAM agglomeration on
+(bendAgglomeration.py).
 
-    ./Allrun [-preset default|ci] [-j N] [-post] [-reference] [-every S]
+    ./Allrun [-preset default|ci|agglomeration] [-np N] [-j N] [-post]
+             [-reference] [-every S]
 
 St = rho_p d_p^2 U / (9 mu D) = tau_p U / a (tau_p = rho_p d_p^2 / (18
 mu), U the mean velocity, D = 2a the pipe diameter; no slip correction).
@@ -19,10 +22,16 @@ particles deposited in the bend among those that entered it (less those
 still in the inlet pipe or the bend at the end), with the binomial sigma
 sqrt(eta (1 - eta) / n).
 
-Runs: runs/<preset>/flow and runs/<preset>/St<St> (a finished run is
+-np N runs the particles on N ranks (the flow stays serial), decomposed
+by aggloTools.decomposition.scattered (planes at arbitrary angles, where
+a user would take scotch, a dummy library in Debian's v1912), in
+runs/<preset>-np<N>; the report then compares every count with the
+serial runs of the preset (a difference FAILs the row).
+
+Runs: runs/<preset>[-np<N>]/flow and .../St<St> (a finished run is
 kept; an interrupted one continues from its last complete write; one
-driver at a time per preset). Report: runs/<preset>/report (-reference:
-results/<preset>): summary.json, table.txt, efficiency.png,
+driver at a time per preset). Report: <runs>/report (-reference:
+results/<preset>[-np<N>]): summary.json, table.txt, efficiency.png,
 deposits.png. Exit status 1 if a row FAILs."""
 
 import json
@@ -32,16 +41,14 @@ import sys
 import time
 from pathlib import Path
 
-import numpy as np
-
-from aggloTools import bendmesh, runtimes, stages, times
-from aggloTools.cloud import (cloud_dir, read_mass_balance, read_positions,
-                              read_record)
+from aggloTools import bendmesh, decomposition, runtimes, stages, times
 from aggloTools.progress import line, solver_progress
 from aggloTools.runner import foam_bin
 from aggloTools.times import last_time
 
-from bendPlots import plots
+import bendAgglomeration
+import bendEfficiency
+from bendPlots import deposits_plot, efficiency_plot
 
 HERE = Path(__file__).resolve().parent
 
@@ -56,6 +63,10 @@ RHO_P = 2200.0                     # the material's rho0 (box kernel)
 # velocity: the slowest, next to the wall, are then out (or counted)
 TRANSITS = 6
 
+#: The ci mesh and pipe (also the agglomeration variant's)
+CI_PIPE = dict(n=6, n_ring=4, grading=0.3, n_axial=(6, 24, 6),
+               curvature=5.6, straight=1.5, dt=1e-4, flow_end=0.03)
+
 PRESETS = {
     # about 6 minutes on 2 cores
     "default": dict(stokes=[0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.5],
@@ -64,9 +75,12 @@ PRESETS = {
                     straight=2.0, parcels=2000, dt=5e-5, flow_end=0.04,
                     inject=0.01),
     # the tests' preset, the limits: about 1 minute
-    "ci": dict(stokes=[0.02, 0.3, 5.0], n=6, n_ring=4, grading=0.3,
-               n_axial=(6, 24, 6), curvature=5.6, straight=1.5,
-               parcels=300, dt=1e-4, flow_end=0.03, inject=0.005),
+    "ci": dict(stokes=[0.02, 0.3, 5.0], parcels=300, inject=0.005,
+               **CI_PIPE),
+    # dense and polydisperse (3-12 um: St 0.07-1.2), collisions and EAM
+    # agglomeration on: about 40 s
+    "agglomeration": dict(sizes=(3e-6, 12e-6), model="EAM", parcels=100000,
+                          inject=0.002, **CI_PIPE),
 }
 
 
@@ -87,20 +101,38 @@ def transit(p):
     return (g.L_in + g.bend_length + g.L_out) / U_MEAN
 
 
+def particle_runs(p):
+    """The particle runs of a preset: name -> (size distribution entries,
+    agglomeration model)."""
+    if "sizes" in p:
+        lo, hi = p["sizes"]
+        return {p["model"]: ("type uniform; uniformDistribution "
+                             f"{{ minValue {lo!r}; maxValue {hi!r}; }}",
+                             p["model"])}
+    return {case_name(st): ("type fixedValue; fixedValueDistribution "
+                            f"{{ value {diameter(st)!r}; }}", "none")
+            for st in p["stokes"]}
+
+
 ESCAPE = ("patchInteractionModel localInteraction;\n"
           "    localInteractionCoeffs { patches ( \"(inlet|outlet)\" "
           "{ type escape; } \"(inletPipe|bend|outletPipe)\" "
           "{ type rebound; e 1; mu 0; } ); }")
-STICK = ("    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.612985e9;"
-         " delta0 2e-10; rho0 2200; }\n"
-         "    particleCollision { en 0.97; et 0.44; muSt 0.94;"
-         " muKin 0.092; }\n    structureModel CSM;\n"
-         "    agglomerationModel none;\n"
-         "    walls { \"(inletPipe|bend|outletPipe)\" "
-         "{ wallModel stick; } }\n")
 
 
-def injector(p, st):
+def stick(model):
+    """The collision model's body: quartz, sticking walls, the
+    agglomeration model (none: collisions only)."""
+    return ("    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.612985e9;"
+            " delta0 2e-10; rho0 2200; }\n"
+            "    particleCollision { en 0.97; et 0.44; muSt 0.94;"
+            " muKin 0.092; }\n    structureModel CSM;\n"
+            f"    agglomerationModel {model};\n"
+            "    walls { \"(inletPipe|bend|outletPipe)\" "
+            "{ wallModel stick; } }\n")
+
+
+def injector(p, sizes):
     return f"""injectionModels
     {{
         inlet
@@ -114,11 +146,7 @@ def injector(p, st):
             massTotal       0;
             parcelBasisType fixed;
             nParticle       1;
-            sizeDistribution
-            {{
-                type        fixedValue;
-                fixedValueDistribution {{ value {diameter(st)!r}; }}
-            }}
+            sizeDistribution {{ {sizes} }}
         }}
     }}"""
 
@@ -139,15 +167,21 @@ def build_flow(case, p):
     bendmesh.developed_inlet(case, g, U_MEAN)
 
 
-def build_particles(case, flow, p, st):
+def run_end(p):
+    """A particle run's end: the injection and TRANSITS transits."""
+    return p["inject"] + TRANSITS * transit(p)
+
+
+def build_particles(case, flow, p, sizes, model, ranks):
     """The particle run: the flow's mesh and final fields at time 0,
-    frozen, the injector at the inlet, sticking walls."""
+    frozen, the injector at the inlet, sticking walls; on ranks > 1
+    decomposed (scattered)."""
     g = geometry(p)
-    end = p["inject"] + TRANSITS * transit(p)
+    end = run_end(p)
     steps = round(end / p["dt"])
     bendmesh.pipe_case(case, g, n=p["n"], n_ring=p["n_ring"],
                        n_axial=p["n_axial"], ring_grading=p["grading"],
-                       particles=[], hard_sphere=STICK,
+                       particles=[], hard_sphere=stick(model),
                        patch_interaction=ESCAPE, dt=p["dt"], end_time=end,
                        write_interval=steps, frozen=True, nu=NU,
                        rho_f=RHO_F, forces="{ SchillerNaumannDrag; }",
@@ -161,23 +195,34 @@ def build_particles(case, flow, p, st):
     shutil.rmtree(case / "0" / "uniform", ignore_errors=True)
     f = case / "constant" / "kinematicCloudProperties"
     f.write_text(f.read_text().replace("injectionModels {}",
-                                       injector(p, st)))
-    return end
+                                       injector(p, sizes)))
+    if ranks > 1:
+        decomposition.scattered(case, ranks)
+        stages.decompose(case)
+
+
+#: Written when a run on N ranks has been reconstructed
+RECONSTRUCTED = "done.reconstructPar"
 
 
 def finished(case):
     log = case / "log.aggloPimpleFoam"
-    return log.is_file() and "\nEnd\n" in log.read_text()
+    done = log.is_file() and "\nEnd\n" in log.read_text()
+    if done and list(case.glob("processor[0-9]*")):
+        return (case / RECONSTRUCTED).is_file()
+    return done
 
 
-def run_one(case, label, build, end, dt, every):
+def run_one(case, label, build, end, dt, every, ranks=1):
     """Build (unless there) and run one case to its end, continuing from
-    its last complete write."""
+    its last complete write (serial; on N ranks a particle run writes
+    only at its end and is run again whole)."""
     tag = f"    {label}"
     if finished(case):
         print(f"{tag}: finished earlier, kept", flush=True)
         return
-    append = (case / "constant" / "polyMesh" / "faces").is_file()
+    append = ranks == 1 and (case / "constant" / "polyMesh" /
+                             "faces").is_file()
     if append:
         times.set_aside_incomplete_times(case)
     else:
@@ -185,11 +230,19 @@ def run_one(case, label, build, end, dt, every):
         build()
 
     def progress(c):
-        at = solver_progress(c / "log.aggloPimpleFoam", end, dt)
+        log = c / "log.aggloPimpleFoam"
+        at = solver_progress(log, end, dt) if log.is_file() else None
         return "starting" if at is None else \
             f"t = {at[0]:.4g} s of {end:.4g} s {line(at[1], at[2])}"
-    wall = stages.run_solver(case, [foam_bin("aggloPimpleFoam")], label,
-                             progress, every, append=append)
+    cmd = [foam_bin("aggloPimpleFoam")]
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks), cmd[0], "-parallel"]
+    wall = stages.run_solver(case, cmd, label, progress, every,
+                             append=append)
+    if ranks > 1:
+        stages.run_logged([foam_bin("reconstructPar"), "-latestTime"], case,
+                          "log.reconstructPar")
+        (case / RECONSTRUCTED).write_text("\n")
     print(f"{tag}: done in {round(wall)} s", flush=True)
 
 
@@ -197,142 +250,118 @@ def case_name(st):
     return f"St{st:g}"
 
 
-def where(x, g):
-    """Which part of the pipe points are in: 'inletPipe', 'bend' or
-    'outletPipe' (the planes z = L_in and x = R)."""
-    return np.where(x[:, 2] <= g.L_in, "inletPipe",
-                    np.where(x[:, 0] >= g.R, "outletPipe", "bend"))
-
-
-def analyse(case, st, p):
-    """The row of one Stokes number: counts from the cloud's record and
-    mass balance at the end, the efficiency and its binomial sigma. A
-    particle still in flight in the outlet pipe has passed the bend; one
-    in the inlet pipe or the bend is undecided and left out."""
-    t = last_time(case)
-    bal = read_mass_balance(case, t)
-    dep = {k: v["nParcels"] for k, v in bal["deposited"].items()}
-    esc = {k: v["nParcels"] for k, v in bal["escaped"].items()}
-    in_flight = read_record(case, t, "kinematicCloud")["nParticlesTotal"]
-    x = read_positions(cloud_dir(case, t) / "positions") if in_flight \
-        else np.zeros((0, 3))
-    parts = where(x, geometry(p))
-    passed = int((parts == "outletPipe").sum())
-    undecided = in_flight - passed
-    injected = in_flight + sum(dep.values()) + sum(esc.values())
-    entered = injected - dep.get("inletPipe", 0) - undecided
-    n_bend = dep.get("bend", 0)
-    eta = n_bend / entered if entered else float("nan")
-    sigma = math.sqrt(eta * (1 - eta) / entered) if entered else float("nan")
-    return dict(St=st, d=diameter(st), injected=injected,
-                expected=p["parcels"], entered=entered, deposited=dep,
-                escaped=esc, inFlight=in_flight, undecided=undecided,
-                eta=eta, sigma=sigma)
-
-
-def judge(rows):
-    """The theory's limits (no measurement is in doc/ yet, README.md):
-    the preset's parcels injected and at most 2 % undecided (in flight
-    before the end of the bend: left out of eta); eta does not fall from one St to the next by
-    more than 2 sigma (both rows' binomial sigma combined); the smallest
-    St below 0.1 deposits less than 10 %, the largest above 3 more than
-    90 % (the inertial limits: tracers follow the flow, ballistic
-    particles hit the outer wall). Each row PASS or FAIL."""
-    verdicts = {}
-    for r in rows:
-        ok = (r["undecided"] <= 0.02 * r["injected"] and r["entered"] > 0
-              and r["injected"] == r["expected"])
-        verdicts[r["St"]] = "PASS" if ok else "FAIL"
-    for a, b in zip(rows, rows[1:]):
-        s = math.hypot(a["sigma"], b["sigma"])
-        if b["eta"] < a["eta"] - 2 * s:
-            verdicts[b["St"]] = "FAIL"
-    lo, hi = rows[0], rows[-1]
-    if lo["St"] < 0.1 and not lo["eta"] < 0.1:
-        verdicts[lo["St"]] = "FAIL"
-    if hi["St"] > 3 and not hi["eta"] > 0.9:
-        verdicts[hi["St"]] = "FAIL"
-    for r in rows:
-        r["verdict"] = verdicts[r["St"]]
-    return rows
-
-
-def table(rows):
-    out = ["    St   d [um]  injected  entered  bend  inletPipe  "
-           "outletPipe  outlet  flight     eta   sigma  verdict"]
-    for r in rows:
-        dep, esc = r["deposited"], r["escaped"]
-        out.append(f"{r['St']:6.3g} {1e6 * r['d']:8.2f} {r['injected']:9d}"
-                   f" {r['entered']:8d} {dep.get('bend', 0):5d}"
-                   f" {dep.get('inletPipe', 0):10d}"
-                   f" {dep.get('outletPipe', 0):11d}"
-                   f" {esc.get('outlet', 0):7d} {r['inFlight']:7d}"
-                   f" {r['eta']:7.3f}"
-                   f" {r['sigma']:7.3f}  {r['verdict']}")
-    out.append("eta: deposited in the bend / entered the bend (flight: "
-               "still in the pipe at the end; those in the outlet pipe "
-               "passed the bend, the others are left out); sigma: binomial. "
-               "Verdicts: the balance and the theory's limits (no "
-               "measurement in doc/ yet: README.md).")
-    return "\n".join(out) + "\n"
-
-
 def options(argv):
     p = stages.Parser("bendDeposition", __doc__)
     p.add_argument("-preset", default="default", choices=sorted(PRESETS),
                    help="the Stokes numbers, mesh and particles "
                    "(default: default)")
+    p.add_argument("-np", type=stages.positive("-np"), default=1,
+                   help="ranks of each particle run (default 1: serial; "
+                   "above 1 the report compares with the serial runs)")
     p.add_argument("-j", type=stages.positive("-j"), default=2,
                    help="particle runs at a time (default 2)")
     p.add_argument("-post", action="store_true",
                    help="only the report of the finished runs")
     p.add_argument("-reference", action="store_true",
-                   help="write the report into results/<preset>")
+                   help="write the report into results/<preset> "
+                   "(results/<preset>-np<N> with -np N)")
     p.add_argument("-every", type=stages.positive("-every"), default=60,
                    help="seconds between progress lines (default 60)")
-    return p.parse_args(argv)
+    a = p.parse_args(argv)
+    stages.within_cores(p, a.np)
+    return a
+
+
+def base_of(preset, ranks):
+    name = preset if ranks == 1 else f"{preset}-np{ranks}"
+    return HERE / "runs" / name
+
+
+def rows_of(base, p):
+    """The report's rows of a preset's finished runs under base."""
+    g = geometry(p)
+    if "sizes" in p:
+        return [bendAgglomeration.analyse(base / p["model"], p, g)]
+    return [bendEfficiency.analyse(base / case_name(st), st, diameter(st),
+                                   p, g) for st in p["stokes"]]
+
+
+def verdicts(rows, p, serial):
+    """The rows judged (and compared with the serial rows, if given);
+    the report's text."""
+    if "sizes" in p:
+        row = bendAgglomeration.judge(rows[0])
+        if serial is not False:
+            same = ("deposited", "escaped", "depositedPrimaries",
+                    "escapedPrimaries", "inFlight", "inFlightPrimaries",
+                    "nCol", "nAgg")
+            bendEfficiency.compare(rows, serial, key="model", same=same)
+        return bendAgglomeration.table(row)
+    bendEfficiency.judge(rows)
+    if serial is not False:
+        bendEfficiency.compare(rows, serial)
+    return bendEfficiency.table(rows)
+
+
+def simulate(a, p, base, cases):
+    """The flow, then the particle runs; 1 if one failed."""
+    flow = base / "flow"
+    print(f"bendDeposition: preset {a.preset}, the flow, then "
+          f"{len(cases)} particle run(s) on {a.np} rank(s), {a.j} at a "
+          "time", flush=True)
+    with stages.one_run(base, f"bendDeposition -preset {a.preset}"):
+        run_one(flow, "flow", lambda: build_flow(flow, p),
+                p["flow_end"], p["dt"], a.every)
+        runs = particle_runs(p)
+        failed = stages.pool(
+            list(cases), lambda name: run_one(
+                cases[name], name,
+                lambda: build_particles(cases[name], flow, p,
+                                        *runs[name], a.np),
+                run_end(p), p["dt"], a.every, a.np), a.j)
+    if failed:
+        sys.stderr.write("Allrun: a run failed\n")
+        return 1
+    return 0
 
 
 def work(a):
     p = PRESETS[a.preset]
-    base = HERE / "runs" / a.preset
-    flow = base / "flow"
-    cases = {st: base / case_name(st) for st in p["stokes"]}
+    base = base_of(a.preset, a.np)
+    cases = {name: base / name for name in particle_runs(p)}
     start = time.monotonic()
-    whole = not a.post and not flow.exists()
-    if not a.post:
-        print(f"bendDeposition: preset {a.preset}, the flow, then "
-              f"{len(cases)} Stokes numbers, {a.j} at a time", flush=True)
-        with stages.one_run(base, f"bendDeposition -preset {a.preset}"):
-            run_one(flow, "flow", lambda: build_flow(flow, p),
-                    p["flow_end"], p["dt"], a.every)
-            ends = {st: p["inject"] + TRANSITS * transit(p)
-                    for st in cases}
-            failed = stages.pool(
-                list(cases), lambda st: run_one(
-                    cases[st], case_name(st),
-                    lambda: build_particles(cases[st], flow, p, st),
-                    ends[st], p["dt"], a.every), a.j)
-        if failed:
-            sys.stderr.write("Allrun: a run failed\n")
-            return 1
-    missing = [c.name for c in [flow, *cases.values()] if not finished(c)]
+    whole = not a.post and not (base / "flow").exists()
+    if not a.post and simulate(a, p, base, cases):
+        return 1
+    missing = [c.name for c in [base / "flow", *cases.values()]
+               if not finished(c)]
     if missing:
         sys.stderr.write(f"Allrun: no finished run of {' '.join(missing)} "
-                         f"under {base}: run ./Allrun -preset {a.preset} "
-                         "first\n")
+                         f"under {base}: run ./Allrun -preset {a.preset}"
+                         f"{'' if a.np == 1 else f' -np {a.np}'} first\n")
         return 1
-    rows = judge([analyse(cases[st], st, p) for st in p["stokes"]])
-    out = HERE / "results" / a.preset if a.reference else base / "report"
+    rows = rows_of(base, p)
+    serial = False
+    if a.np > 1:
+        one = base_of(a.preset, 1)
+        serial = rows_of(one, p) if all(
+            finished(one / c.name) for c in cases.values()) else None
+    text = verdicts(rows, p, serial)
+    out = HERE / "results" / base.name if a.reference else base / "report"
     out.mkdir(parents=True, exist_ok=True)
     (out / "summary.json").write_text(json.dumps(
-        dict(preset=a.preset, settings=p, Re=RE, D=D, U=U_MEAN,
+        dict(preset=a.preset, ranks=a.np, settings=p, Re=RE, D=D, U=U_MEAN,
              rho_p=RHO_P, rows=rows), indent=1) + "\n")
-    text = table(rows)
     (out / "table.txt").write_text(text)
-    plots(rows, cases[p["stokes"][len(p["stokes"]) // 2]], geometry(p), out)
+    g = geometry(p)
+    if "stokes" in p:
+        efficiency_plot(rows, g, out)
+    shown = list(cases.values())[len(cases) // 2]
+    deposits_plot(shown, "the agglomeration variant" if "sizes" in p
+                  else f"St = {shown.name[2:]}", out)
     print(text + f"Results: {out}")
-    print(runtimes.line(f"bendDeposition {a.preset}",
+    print(runtimes.line(f"bendDeposition {a.preset}"
+                        + ("" if a.np == 1 else f" -np {a.np}"),
                         time.monotonic() - start, whole))
     return 1 if any(r["verdict"] == "FAIL" for r in rows) else 0
 

@@ -19,11 +19,16 @@ def _patch_faces(case, patch):
     return int(m.group(2)), int(m.group(1))
 
 
-def plots(rows, case, g, out):
+def _pyplot():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    return plt
 
+
+def efficiency_plot(rows, g, out):
+    """efficiency.png: eta against St with the binomial sigma."""
+    plt = _pyplot()
     st = np.array([r["St"] for r in rows])
     eta = np.array([r["eta"] for r in rows])
     sig = np.array([r["sigma"] for r in rows])
@@ -41,8 +46,12 @@ def plots(rows, case, g, out):
     fig.savefig(out / "efficiency.png", dpi=120)
     plt.close(fig)
 
-    # Where one Stokes number deposited: every wall face, coloured by its
-    # deposited mass, projected on the bend's plane (x, z)
+
+def deposits_plot(case, what, out):
+    """deposits.png: where the particles of one run (`what`: 'St = 0.3')
+    deposited: every wall face coloured by its deposited mass, projected
+    on the bend's plane (x, z)."""
+    plt = _pyplot()
     mesh = Mesh(case)
     Cf, _ = mesh.face_centres_and_areas()
     t = last_time(case)
@@ -63,8 +72,7 @@ def plots(rows, case, g, out):
     ax.set_aspect("equal")
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("z [mm] (inflow along +z, outflow along +x)")
-    st0 = case.name[2:]
-    ax.set_title(f"Where particles of St = {st0} deposit (faces of both "
+    ax.set_title(f"Where particles of {what} deposit (faces of both "
                  "halves;\ngrey: the wall's faces on the near half)",
                  fontsize=10)
     fig.tight_layout()

@@ -44,7 +44,6 @@ Run times on the 2-core development machine: README.md.
 
 import contextlib
 import io
-import os
 import shutil
 import subprocess
 import sys
@@ -71,10 +70,7 @@ def options(argv):
     p.add_argument("-every", type=stages.positive("-every"), default=60)
     p.add_argument("-reference", action="store_true")
     a = p.parse_args(argv)
-    cores = len(os.sched_getaffinity(0))
-    if a.np > cores:
-        p.error(f"-np {a.np} is more than the {cores} cores this run may "
-                "use (Open MPI refuses to start more ranks than cores)")
+    stages.within_cores(p, a.np)
     if a.matrix:
         a.configs = MATRIX
     return a

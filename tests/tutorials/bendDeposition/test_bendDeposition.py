@@ -1,8 +1,11 @@
 """tutorials/bendDeposition: the Stokes number's diameter against the hand
-formula, the gate's verdicts on made-up rows (each limit fails when it
-should), and the `ci` preset run end to end in a copy of the tutorial
-(about 30 s): exit status 0, every row PASS, the counts from the mass
-balance adding up to the injected particles, the pictures written."""
+formula, the gates' verdicts on made-up rows (each limit fails when it
+should: the theory's limits, the serial comparison, the agglomeration
+variant's checks), the `ci` preset run end to end in a copy of the
+tutorial, serial then on 2 ranks (about 45 s): exit status 0, every row
+PASS, the counts from the mass balance adding up to the injected
+particles, the 2-rank counts equal to the serial ones, the pictures
+written; and the `agglomeration` preset end to end (about 35 s)."""
 
 import json
 import math
@@ -14,7 +17,10 @@ import pytest
 from aggloTools.runner import project_dir, tutorial_module
 
 TUT = project_dir() / "tutorials" / "bendDeposition"
-tutorial_module("bendDeposition", "bendPlots")     # the driver's sibling
+# the driver's siblings first
+tutorial_module("bendDeposition", "bendPlots")
+efficiency = tutorial_module("bendDeposition", "bendEfficiency")
+agglomeration = tutorial_module("bendDeposition", "bendAgglomeration")
 driver = tutorial_module("bendDeposition", "bendDeposition")
 
 
@@ -37,30 +43,70 @@ def row(st, eta, n=1000, flight=0, injected=1000):
 def test_gate_verdicts():
     """Each limit of the gate fails a row that breaks it, and only it."""
     good = [row(0.05, 0.03), row(0.5, 0.5), row(5.0, 0.97)]
-    assert [r["verdict"] for r in driver.judge(good)] == ["PASS"] * 3
+    assert [r["verdict"] for r in efficiency.judge(good)] == ["PASS"] * 3
     # tracers that deposit
-    bad = driver.judge([row(0.05, 0.2), row(0.5, 0.5), row(5.0, 0.97)])
+    bad = efficiency.judge([row(0.05, 0.2), row(0.5, 0.5), row(5.0, 0.97)])
     assert [r["verdict"] for r in bad] == ["FAIL", "PASS", "PASS"]
     # ballistic particles that do not
-    bad = driver.judge([row(0.05, 0.03), row(0.5, 0.5), row(5.0, 0.8)])
+    bad = efficiency.judge([row(0.05, 0.03), row(0.5, 0.5), row(5.0, 0.8)])
     assert [r["verdict"] for r in bad] == ["PASS", "PASS", "FAIL"]
     # a fall beyond 2 sigma with St, but not within it
-    bad = driver.judge([row(0.05, 0.03), row(0.5, 0.6), row(1.0, 0.5),
+    bad = efficiency.judge([row(0.05, 0.03), row(0.5, 0.6), row(1.0, 0.5),
                         row(5.0, 0.97)])
     assert [r["verdict"] for r in bad] == ["PASS", "PASS", "FAIL", "PASS"]
-    ok = driver.judge([row(0.05, 0.03), row(0.5, 0.6), row(1.0, 0.59),
+    ok = efficiency.judge([row(0.05, 0.03), row(0.5, 0.6), row(1.0, 0.59),
                        row(5.0, 0.97)])
     assert all(r["verdict"] == "PASS" for r in ok)
     # particles lost or left in flight
-    bad = driver.judge([row(0.05, 0.03, flight=30), row(0.5, 0.5,
+    bad = efficiency.judge([row(0.05, 0.03, flight=30), row(0.5, 0.5,
                         injected=999), row(5.0, 0.97, flight=20)])
     assert [r["verdict"] for r in bad] == ["FAIL", "FAIL", "PASS"]
 
 
-def test_ci_preset_end_to_end(tmp_path, foam_env):
+def test_serial_comparison_gate():
+    """A row on N ranks FAILs when one count differs from the serial
+    row's, names the count, and says n/r without a serial run."""
+    serial = [dict(row(0.3, 0.5), deposited={"bend": 500},
+                   escaped={"outlet": 500})]
+    same = [dict(r) for r in serial]
+    r = efficiency.compare(efficiency.judge(same), serial)[0]
+    assert (r["verdict"], r["serial"]) == ("PASS", "same counts")
+    moved = [dict(serial[0], deposited={"bend": 499, "outletPipe": 1})]
+    r = efficiency.compare(efficiency.judge(moved), serial)[0]
+    assert (r["verdict"], r["serial"]) == ("FAIL", "differs: deposited")
+    alone = efficiency.compare(efficiency.judge([dict(serial[0])]), None)[0]
+    assert alone["verdict"] == "PASS" and alone["serial"].startswith("n/r")
+
+
+def agg_row(**kw):
+    r = dict(injected=100, accounted=100, nAgg=3, deposited={"bend": 40},
+             depositedPrimaries={"bend": 43})
+    r.update(kw)
+    return r
+
+
+def test_agglomeration_gate():
+    """Each check of the agglomeration variant fails alone: a primary
+    missing, no agglomeration, agglomerates not deposited whole."""
+    assert agglomeration.judge(agg_row())["verdict"] == "PASS"
+    for bad, check in ((dict(accounted=99), "every primary accounted for"),
+                       (dict(nAgg=0), "agglomerates formed"),
+                       (dict(depositedPrimaries={"bend": 40}),
+                        "agglomerates deposited whole")):
+        r = agglomeration.judge(agg_row(**bad))
+        assert r["verdict"] == "FAIL"
+        assert [k for k, ok in r["checks"].items() if not ok] == [check]
+
+
+def copy_tutorial(tmp_path):
     tut = tmp_path / "bendDeposition"
     shutil.copytree(TUT, tut, ignore=shutil.ignore_patterns(
         "runs", "results", "__pycache__"))
+    return tut
+
+
+def test_ci_preset_end_to_end(tmp_path, foam_env):
+    tut = copy_tutorial(tmp_path)
     res = subprocess.run(["./Allrun", "-preset", "ci", "-every", "1"],
                          cwd=tut, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True, timeout=900)
@@ -87,3 +133,39 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
                          text=True, timeout=300)
     assert res.returncode == 0 and "finished earlier, kept" in res.stdout
     assert json.loads((out / "summary.json").read_text())["rows"] == rows
+    # on 2 ranks (scattered decomposition): the serial run's counts
+    res = subprocess.run(["./Allrun", "-preset", "ci", "-np", "2"],
+                         cwd=tut, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True, timeout=600)
+    assert res.returncode == 0, res.stdout[-3000:]
+    two = json.loads((tut / "runs/ci-np2/report/summary.json").read_text())
+    assert two["ranks"] == 2
+    for r, s in zip(two["rows"], rows):
+        assert r["serial"] == "same counts"
+        assert {k: r[k] for k in efficiency.SAME} == \
+            {k: s[k] for k in efficiency.SAME}
+    assert len(list((tut / "runs/ci-np2/St0.3").glob("processor*"))) == 2
+
+
+def test_agglomeration_preset_end_to_end(tmp_path, foam_env):
+    """The dense variant: collisions and agglomerates, every primary
+    accounted for, agglomerates deposited whole (more primaries than
+    parcels on the walls), the primaries injected equal to the preset's."""
+    tut = copy_tutorial(tmp_path)
+    res = subprocess.run(["./Allrun", "-preset", "agglomeration"], cwd=tut,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=900)
+    assert res.returncode == 0, res.stdout[-3000:]
+    r = json.loads((tut / "runs/agglomeration/report/summary.json")
+                   .read_text())["rows"][0]
+    assert r["verdict"] == "PASS", r
+    assert r["nCol"] > r["nAgg"] > 0
+    total = (r["inFlightPrimaries"] + sum(r["depositedPrimaries"].values())
+             + sum(r["escapedPrimaries"].values()))
+    assert total == r["injected"] == driver.PRESETS["agglomeration"][
+        "parcels"]
+    walls = ("inletPipe", "bend", "outletPipe")
+    assert sum(r["depositedPrimaries"].get(w, 0) for w in walls) > \
+        sum(r["deposited"].get(w, 0) for w in walls)
+    assert (tut / "runs/agglomeration/report/deposits.png").stat() \
+        .st_size > 10000

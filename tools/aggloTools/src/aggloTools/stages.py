@@ -80,6 +80,17 @@ def positive(name):
     return parse
 
 
+def within_cores(parser, np):
+    """Refuse (parser.error) more ranks than the cores this process may
+    use: Open MPI refuses to start them, but only inside the solver's
+    log, after the stages before it."""
+    cores = len(os.sched_getaffinity(0))
+    if np > cores:
+        parser.error(f"-np {np} is more than the {cores} cores this run "
+                     "may use (Open MPI refuses to start more ranks than "
+                     "cores)")
+
+
 # ------------------------------------------------------------------- cases
 
 def fresh_case(case, folders):
@@ -207,8 +218,10 @@ def run_solver(case, cmd, label, progress, every, append=False,
     case = Path(case)
     t0 = time.time()
     app = Path(str(cmd[0])).name
-    if app == "mpirun":                         # mpirun -n N app -parallel
-        app = f"{Path(str(cmd[3])).name} ({cmd[2]} processes)"
+    if app == "mpirun":             # mpirun -n N [options] app -parallel
+        args = [str(c) for c in cmd]
+        n = args[args.index("-np" if "-np" in args else "-n") + 1]
+        app = f"{Path(args[args.index('-parallel') - 1]).name} ({n} processes)"
     print(f"Running {app} on {case}", flush=True)
     with _started(cmd, case, log, append) as proc:
         last = t0
