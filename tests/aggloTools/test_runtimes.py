@@ -17,7 +17,7 @@ DRIVER_JOBS = ["verticalChannel small C1 -np 2",
                "shearFlowValidation ci", "shearFlowValidation small",
                "shearFlowValidation small study",
                "breakupShear default", "breakupShear ci",
-               "Alltest", 'Alltest -m "slow or not slow"']
+               "Alltest", 'Alltest -m "not legacy"']
 
 
 def readme(tmp_path, rows):

@@ -71,7 +71,7 @@ def without_paths(path, tut):
     return strip(data)
 
 
-@pytest.mark.slow
+@pytest.mark.legacy
 def test_python_driver_writes_what_the_shell_driver_wrote(tmp_path,
                                                           foam_env):
     script = old_allrun()
