@@ -188,3 +188,37 @@ def test_table_with_a_cut_off_row(tmp_path, body, words):
     with pytest.raises(ValueError, match=words) as e:
         stats.read_table(f)
     assert str(f) in str(e.value)
+
+
+ALTERNATIVES = """FoamFile { version 2.0; }
+// off { commented out }
+none { breakupModel none; }
+stressThreshold
+{
+    nested { none { q 1; } }   // a nested entry of the same name
+    word "}";
+}
+cut { x {
+"""
+
+
+@pytest.mark.parametrize("name, body", [
+    ("none", "breakupModel none;"),
+    ("stressThreshold", 'nested { none { q 1; } }   \n    word "}";'),
+])
+def test_entry_text(name, body):
+    """The top-level entry's text as written (a nested entry of the same
+    name, a brace in quotes and comments do not confuse it), parsed back
+    to what the whole file's parse holds."""
+    text = foamfile.entry_text(ALTERNATIVES, name)
+    assert text == body
+    whole = foamfile.parse_dict(ALTERNATIVES.replace("cut { x {", ""))
+    assert foamfile.parse_dict(text) == whole[name]
+
+
+@pytest.mark.parametrize("name, words", [
+    ("q", "no entry 'q"), ("nested", "no entry 'nested"),
+    ("off", "no entry 'off"), ("cut", "'cut': its '{' does not close")])
+def test_entry_text_refused(name, words):
+    with pytest.raises(ValueError, match=words):
+        foamfile.entry_text(ALTERNATIVES, name)

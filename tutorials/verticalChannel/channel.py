@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from aggloTools import casesettings, fields, progress as prog
+from aggloTools.foamfile import entry_text, read_dict
 
 HERE = Path(__file__).resolve().parent
 
@@ -62,7 +63,7 @@ PI = math.pi
 
 COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
                "ddtScheme", "seed", "writeFormat", "writePositions",
-               "purgeWrite", "eventLog", "UTolerance"}
+               "purgeWrite", "eventLog", "UTolerance", "breakup"}
 PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "unladen", "release", "dispersion", "agglomeration", "window",
                "writeStar", "profileBins", "seededPairs"} | COMMON_KEYS
@@ -112,11 +113,35 @@ def preset(name):
     p["deltaT"] = p["dtStar"] * p["tScale"]
     p["L"] = (2 * PI * p["delta"], 2 * p["delta"], PI * p["delta"])
     choices = {"writeFormat": ("ascii", "binary"),
-               "writePositions": ("on", "off"), "eventLog": ("on", "off")}
+               "writePositions": ("on", "off"), "eventLog": ("on", "off"),
+               "breakup": breakup_models()}
     for key, valid in choices.items():
         casesettings.choice(p[key], valid,
                             f"channel.py: presets/{name}: {key}")
     return p
+
+
+#: The break-up models a preset may name (`breakup NAME;`)
+BREAKUP_MODELS = HERE / "breakupModels"
+
+
+def breakup_models():
+    """The names of the entries of breakupModels."""
+    try:
+        d = read_dict(BREAKUP_MODELS)
+    except ValueError as e:
+        sys.exit(f"channel.py: {e}")
+    return tuple(d)
+
+
+def breakup_entry(p, stage):
+    """The caseSettings text of the stage's break-up: the preset's model
+    (breakupModels) in the agglomeration stage, none before it."""
+    name = p["breakup"] if stage == "agglomeration" else "none"
+    body = entry_text(BREAKUP_MODELS.read_text(), name)
+    # the entry's lines as breakupModels indents them (its first one's
+    # indentation stripped)
+    return "breakup\n{\n    " + body + "\n}"
 
 
 def configuration(name):
@@ -247,6 +272,10 @@ clouds          {clouds};
 // The collision-event log of the agglomeration stage (doc/eventLog.md)
 eventLog        {p['eventLog'] if stage == 'agglomeration' else 'off'};
 
+// Break-up (the preset's `breakup`, breakupModels: {p['breakup']}), merged
+// into the clouds' subModels; in the agglomeration stage only
+{breakup_entry(p, stage)}
+
 // ************************************************************************* //
 """
 
@@ -261,7 +290,7 @@ SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
                  "dParticle", "nParticles", "seed", "subModels", "coupled",
                  "couplingScale", "cloudForces", "dispersionModel",
                  "enParticle", "wallType", "wallCoeffs", "profileBins",
-                 "clouds", "eventLog"}
+                 "clouds", "eventLog", "breakup"}
 
 
 def read_settings(case):

@@ -27,8 +27,8 @@ def run_smoke(tmp, np_):
         shutil.rmtree(case)
     case.mkdir(parents=True)
     scripts = sorted(f.name for f in TUTORIAL.glob("channel*.py"))
-    for name in ["0.orig", "constant", "system", "presets", "Allrun",
-                 "Allclean"] + scripts:
+    for name in ["0.orig", "constant", "system", "presets",
+                 "breakupModels", "Allrun", "Allclean"] + scripts:
         src = TUTORIAL / name
         (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)
     res = subprocess.run(

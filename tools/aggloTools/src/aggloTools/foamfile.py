@@ -91,6 +91,30 @@ def parse_dict(text):
     return d
 
 
+def entry_text(text, name):
+    """The text inside the braces of the top-level sub-dictionary `name`
+    of a dictionary's text (comments removed), as written: for copying
+    one entry of a file of named alternatives into another dictionary.
+    ValueError if there is none or its braces do not close."""
+    body = strip_comments(text)
+    tokens = list(re.finditer(r'"[^"]*"|[{};]|[^\s{};"]+', body))
+    depth, first = 0, None
+    for k, m in enumerate(tokens):
+        tok = m.group()
+        if tok == "{":
+            depth += 1
+            if depth == 1 and k and tokens[k - 1].group() == name \
+                    and first is None:
+                first = m.end()
+        elif tok == "}":
+            depth -= 1
+            if depth == 0 and first is not None:
+                return body[first:m.start()].strip()
+    if first is not None:
+        raise ValueError(f"entry '{name}': its '{{' does not close")
+    raise ValueError(f"no entry '{name} {{ ... }}'")
+
+
 def read_dict(path):
     """parse_dict of a file; an error names the file."""
     try:

@@ -219,6 +219,8 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
     DynamicList<breakupEvent> events;
     DynamicList<labelPair> ids;
     label nDeferred = 0;
+    label nChecked = 0;
+    scalar largest = -GREAT;        // the verdicts' largest first value
     for (parcelType& p : cloud)
     {
         // Not moved by an event; moved out of a wall: from the target
@@ -263,6 +265,8 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
         };
         const breakupKernel::verdict v =
             kernel_->check(s, L, runTime.deltaTValue(), k);
+        ++nChecked;
+        largest = max(largest, v.values[0]);
         if (v.mechanism >= 0 && v.deferred)
         {
             ++nDeferred;
@@ -337,6 +341,8 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
     Pstream::listCombineScatter(nEvents);
     reduce(dKE, sumOp<scalar>());
     reduce(nDeferred, sumOp<label>());
+    reduce(nChecked, sumOp<label>());
+    reduce(largest, maxOp<scalar>());
 
     Info<< "    Break-up: " << sum(nEvents) << " events (";
     forAll(nEvents, m)
@@ -347,6 +353,14 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
     if (kernel_->defers())
     {
         Info<< ", deferred by the rate " << nDeferred;
+    }
+    // How near the agglomerates that hold came to breaking: the largest
+    // first value the model declares (stressThreshold: the ratio of the
+    // load to the strength)
+    Info<< ", " << nChecked << " agglomerates checked";
+    if (nChecked && !kernel_->fields().empty())
+    {
+        Info<< ", largest " << kernel_->fields()[0] << ' ' << largest;
     }
     Info<< ", fragment ids handed out " << this->ids_.next()
         << ", kinetic energy change " << dKE << " J" << endl;
