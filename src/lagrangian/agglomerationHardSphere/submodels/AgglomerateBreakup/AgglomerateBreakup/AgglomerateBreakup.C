@@ -54,29 +54,6 @@ Foam::AgglomerateBreakup<CloudType>::collisionOf
 
 
 template<class CloudType>
-Foam::vector Foam::AgglomerateBreakup<CloudType>::dragForce
-(
-    parcelType& p,
-    trackingData& td
-) const
-{
-    // The velocity seen: the carrier velocity as in the tracking plus the
-    // SGS velocity of the dispersion model
-    td.Uc() += p.UTurb();
-
-    const scalar dt = this->owner().db().time().deltaTValue();
-    const forceSuSp F =
-        this->owner().forces().calcCoupled
-        (
-            p, td, dt, p.mass(), p.Re(td), td.muc()
-        );
-
-    // The part linear in the slip: the drag laws' implicit coefficient
-    return F.Sp()*(td.Uc() - p.U());
-}
-
-
-template<class CloudType>
 Foam::scalar Foam::AgglomerateBreakup<CloudType>::split
 (
     parcelType& p,
@@ -181,153 +158,16 @@ Foam::AgglomerateBreakup<CloudType>::AgglomerateBreakup
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
+void Foam::AgglomerateBreakup<CloudType>::report
+(
+    const stepSurvey& s,
+    labelList nEvents,
+    scalar dKE
+)
 {
-    CloudType& cloud = this->owner();
-    const fvMesh& mesh = cloud.mesh();
-
-    // The velocity gradient only if an agglomerate is there on some rank
-    // (the gradient is collective across processor patches)
-    bool agglomerates = false;
-    for (const parcelType& p : cloud)
-    {
-        if (p.nPrimary() > 1)
-        {
-            agglomerates = true;
-            break;
-        }
-    }
-    reduce(agglomerates, orOp<bool>());
-
-    // The carrier's fields: cell values [rec, doc/breakup.md 1.1]
-    const tmp<volTensorField> tgradU
-    (
-        agglomerates ? fvc::grad(cloud.U()) : tmp<volTensorField>()
-    );
-    const volScalarField* nutPtr =
-        mesh.template findObject<volScalarField>("nut");
-    const volScalarField& rho = cloud.rho();
-    const volScalarField& mu = cloud.mu();
-
-    // The agglomerates that break, checked once each after the step's
-    // collisions and agglomerations (doc/breakup.md 4.1: the state a
-    // collision or an agglomeration left, at the end position of the
-    // stage or the target of its relocation); the partners merged into
-    // an agglomerate are gone
-    const Time& runTime = cloud.db().time();
-    DynamicList<parcelType*> parents;
-    DynamicList<breakupEvent> events;
-    DynamicList<labelPair> ids;
-    label nDeferred = 0;
-    label nChecked = 0;
-    scalar largest = -GREAT;        // the verdicts' largest first value
-    for (parcelType& p : cloud)
-    {
-        // Not moved by an event; moved out of a wall: from the target
-        const hardSphereParcelStage& st = p.stage();
-        if
-        (
-            !agglomerates
-         || p.nPrimary() < 2
-         || !(st.positionKnown() || st.relocating())
-         || st.removed()
-        )
-        {
-            continue;
-        }
-
-        const label celli = p.cell();
-        const symmTensor S(symm(tgradU()[celli]));
-        const scalar nu = mu[celli]/rho[celli];
-        const scalar nut = nutPtr ? (*nutPtr)[celli] : 0;
-
-        breakupStresses::load L;
-        L.epsilon = breakupCriterion::dissipation(nu, nut, S);
-        L.nu = nu;
-        L.rhoF = rho[celli];
-        L.omega = p.omega();
-        L.wallImpactSpeed = st.wallImpactSpeed();
-        L.dragForce = Zero;
-        if (kernel_->needsDrag())
-        {
-            p.setCellValues(cloud, td);
-            L.dragForce = dragForce(p, td);
-        }
-
-        const hardSphereState s
-        (
-            st.relocating() ? st.relocationTarget() : st.knownPosition(),
-            p.U(), p.omega(), p.d(), p.rho(), p.nPrimary()
-        );
-        const breakupKernel::key k
-        {
-            p.origProc(), p.origId(), runTime.timeIndex()
-        };
-        const breakupKernel::verdict v =
-            kernel_->check(s, L, runTime.deltaTValue(), k);
-        ++nChecked;
-        largest = max(largest, v.values[0]);
-        if (v.mechanism >= 0 && v.deferred)
-        {
-            ++nDeferred;
-            continue;
-        }
-        if (v.breaks())
-        {
-            if (debug)
-            {
-                Pout<< "    break-up of (" << p.origProc() << ' '
-                    << p.origId() << "): N " << p.nPrimary() << ", "
-                    << kernel_->mechanisms()[v.mechanism] << ", values "
-                    << v.values << ", eps " << L.epsilon << " m2/s3, |F_D| "
-                    << mag(L.dragForce) << " N, |U| " << mag(p.U())
-                    << " m/s, |omega| " << mag(p.omega()) << " 1/s"
-                    << endl;
-            }
-            breakupEvent e;
-            e.timeIndex = k.timeIndex;
-            e.mechanism = v.mechanism;
-            e.proc = k.origProc;
-            e.id = k.origId;
-            e.dt = runTime.deltaTValue();
-            e.parent = s;
-            e.load = L;
-            e.S = S;
-            e.values = v.values;
-            parents.append(&p);
-            events.append(e);
-            ids.append(labelPair(p.origProc(), p.origId()));
-        }
-    }
-
-    // The new parcels' global ids (collective)
-    const labelList newIds(this->ids_.assign(ids));
-
-    const wordList& mechanisms = kernel_->mechanisms();
-    labelList nEvents(mechanisms.size(), Zero);
-    scalar dKE = 0;
-    forAll(parents, i)
-    {
-        breakupEvent& e = events[i];
-        e.newProc = fragmentIds::origProc;
-        e.newId = newIds[i];
-        dKE += split(*parents[i], e);
-        ++nEvents[e.mechanism];
-        if (log_.valid())
-        {
-            log_->append(e);
-        }
-    }
-
-    // The log goes with the written state
-    if (log_.valid() && runTime.writeTime())
-    {
-        log_->write();
-    }
-
     // The statistics' columns (local: the statistics sum over the ranks)
     hardSphereStep& step =
-        cloud.template lookupObjectRef<hardSphereStep>
+        this->owner().template lookupObjectRef<hardSphereStep>
         (
             hardSphereStep::typeName
         );
@@ -337,6 +177,9 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
     }
     step.sums[columns_.second()] += dKE;
 
+    label nDeferred = s.nDeferred;
+    label nChecked = s.nChecked;
+    scalar largest = s.largest;
     Pstream::listCombineGather(nEvents, plusEqOp<label>());
     Pstream::listCombineScatter(nEvents);
     reduce(dKE, sumOp<scalar>());
@@ -344,6 +187,7 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
     reduce(nChecked, sumOp<label>());
     reduce(largest, maxOp<scalar>());
 
+    const wordList& mechanisms = kernel_->mechanisms();
     Info<< "    Break-up: " << sum(nEvents) << " events (";
     forAll(nEvents, m)
     {
@@ -364,6 +208,48 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
     }
     Info<< ", fragment ids handed out " << this->ids_.next()
         << ", kinetic energy change " << dKE << " J" << endl;
+}
+
+
+template<class CloudType>
+void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
+{
+    // The agglomerates that break, checked once each after the step's
+    // collisions and agglomerations (doc/breakup.md 4.1: the state a
+    // collision or an agglomeration left, at the end position of the
+    // stage or the target of its relocation); none unless an agglomerate
+    // is there on some rank (the velocity gradient is collective across
+    // processor patches)
+    stepSurvey s;
+    if (anyAgglomerate())
+    {
+        check(td, s);
+    }
+
+    // The new parcels' global ids (collective), the splits, the log
+    const labelList newIds(this->ids_.assign(s.ids));
+    labelList nEvents(kernel_->mechanisms().size(), Zero);
+    scalar dKE = 0;
+    forAll(s.parents, i)
+    {
+        breakupEvent& e = s.events[i];
+        e.newProc = fragmentIds::origProc;
+        e.newId = newIds[i];
+        dKE += split(*s.parents[i], e);
+        ++nEvents[e.mechanism];
+        if (log_.valid())
+        {
+            log_->append(e);
+        }
+    }
+
+    // The log goes with the written state
+    if (log_.valid() && this->owner().db().time().writeTime())
+    {
+        log_->write();
+    }
+
+    report(s, nEvents, dKE);
 }
 
 
