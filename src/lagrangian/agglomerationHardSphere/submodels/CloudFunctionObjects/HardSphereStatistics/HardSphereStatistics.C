@@ -71,24 +71,157 @@ Foam::HardSphereStatistics<CloudType>::HardSphereStatistics
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Private Classes * * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::HardSphereStatistics<CloudType>::postEvolve()
+void Foam::HardSphereStatistics<CloudType>::particleSums::reduce()
 {
-    typedef hardSphereStep hs;
+    Foam::reduce(nParticles, sumOp<label>());
+    Foam::reduce(nPrimaries, sumOp<label>());
+    Foam::reduce(nAgglomerates, sumOp<label>());
+    Foam::reduce(nPrimariesInAgglomerates, sumOp<label>());
+    Foam::reduce(maxPrimaries, maxOp<label>());
+    Foam::reduce(sumD, sumOp<scalar>());
+    Foam::reduce(Dmax, maxOp<scalar>());
+    Foam::reduce(mass, sumOp<scalar>());
+}
 
-    // The collision model's record of the stage, in the cloud's registry
+
+template<class CloudType>
+Foam::HardSphereStatistics<CloudType>::slabSums::slabSums(const label n)
+:
+    colBin(n, Zero),
+    colFirstBin(n, Zero),
+    aggBin(n, Zero),
+    visits(n, Zero),
+    volume(n, Zero),
+    sumDBin(n, Zero),
+    sumU(n, Zero),
+    sumUU(n, Zero)
+{}
+
+
+template<class CloudType>
+void Foam::HardSphereStatistics<CloudType>::slabSums::reduce()
+{
+    Foam::reduce(colBin, sumOp<scalarField>());
+    Foam::reduce(colFirstBin, sumOp<scalarField>());
+    Foam::reduce(aggBin, sumOp<scalarField>());
+    Foam::reduce(visits, sumOp<scalarField>());
+    Foam::reduce(volume, sumOp<scalarField>());
+    Foam::reduce(sumDBin, sumOp<scalarField>());
+    Foam::reduce(sumU, sumOp<vectorField>());
+    Foam::reduce(sumUU, sumOp<symmTensorField>());
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::hardSphereStep&
+Foam::HardSphereStatistics<CloudType>::stepRecord() const
+{
     const CloudType& cloud = this->owner();
-    if (!cloud.template foundObject<hardSphereStep>(hs::typeName))
+    if (!cloud.template foundObject<hardSphereStep>(hardSphereStep::typeName))
     {
         FatalErrorInFunction
             << "The function object hardSphereStatistics needs a"
             << " hard-sphere cloud; " << cloud.name()
             << " is not one" << exit(FatalError);
     }
-    const hardSphereStep& step =
-        cloud.template lookupObject<hardSphereStep>(hs::typeName);
+    return cloud.template lookupObject<hardSphereStep>
+    (
+        hardSphereStep::typeName
+    );
+}
+
+
+template<class CloudType>
+void Foam::HardSphereStatistics<CloudType>::sumParticles
+(
+    const hardSphereProfiles* profiles,
+    particleSums& s,
+    slabSums& b,
+    Map<label>& histogram,
+    const bool writeTime
+) const
+{
+    const vectorField& K =
+        profiles ? profiles->meanU() : vectorField::null();
+
+    for (const parcelType& p : this->owner())
+    {
+        ++s.nParticles;
+        s.nPrimaries += p.nPrimary();
+        if (p.nPrimary() > 1)
+        {
+            ++s.nAgglomerates;
+            s.nPrimariesInAgglomerates += p.nPrimary();
+            if (writeTime)
+            {
+                ++histogram(p.nPrimary(), 0);
+            }
+        }
+        s.maxPrimaries = max(s.maxPrimaries, p.nPrimary());
+        s.sumD += p.d();
+        s.Dmax = max(s.Dmax, p.d());
+        s.mass += p.nParticle()*p.mass();
+
+        if (profiles)
+        {
+            // The position of the collision stage where known
+            const label k = profiles->bin
+            (
+                p.stage().positionKnown()
+              ? p.stage().knownPosition() : p.position()
+            );
+            if (k >= 0)
+            {
+                b.visits[k] += 1;
+                b.volume[k] += p.nParticle()*p.volume();
+                b.sumDBin[k] += p.d();
+                b.sumU[k] += p.U();
+                b.sumUU[k] += sqr(p.U() - K[k]);
+            }
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::HardSphereStatistics<CloudType>::binEvents
+(
+    const hardSphereStep& step,
+    const hardSphereProfiles& profiles,
+    slabSums& b
+)
+{
+    forAll(step.eventPoint, e)
+    {
+        const label k = profiles.bin(step.eventPoint[e]);
+        if (k >= 0)
+        {
+            b.colBin[k] += 1;
+            if (step.eventCategory[e] == encounterMemory::FIRST)
+            {
+                b.colFirstBin[k] += 1;
+            }
+            if (step.eventAgglomerates[e])
+            {
+                b.aggBin[k] += 1;
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::HardSphereStatistics<CloudType>::postEvolve()
+{
+    typedef hardSphereStep hs;
+    const hardSphereStep& step = stepRecord();
     hardSphereStatisticsAccumulator& st = stats_();
 
     // Counters (named by the collision stage and its agglomeration model)
@@ -102,122 +235,34 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
     reduce(globalSums, sumOp<scalarField>());
     st.addCounts(globalCounts, globalSums);
 
-    // Particles
-    label nParticles = 0;
-    label nPrimaries = 0;
-    label nAgglomerates = 0;
-    label nPrimariesInAgglomerates = 0;
-    label maxPrimaries = 0;
-    scalar sumD = 0;
-    scalar Dmax = 0;
-    scalar mass = 0;
-
+    // Particles, and the profiles' slabs
+    const Time& runTime = this->owner().db().time();
+    const bool writeTime = runTime.writeTime();
     hardSphereProfiles* profiles = st.profiles();
-    const label nBins = profiles ? profiles->nBins() : 0;
-    scalarField colBin(nBins, Zero);
-    scalarField colFirstBin(nBins, Zero);
-    scalarField aggBin(nBins, Zero);
-    scalarField visits(nBins, Zero);
-    scalarField volume(nBins, Zero);
-    scalarField sumDBin(nBins, Zero);
-    vectorField sumU(nBins, Zero);
-    symmTensorField sumUU(nBins, Zero);
-    const vectorField& K =
-        profiles ? profiles->meanU() : vectorField::null();
-
-    const bool writeTime = cloud.db().time().writeTime();
+    particleSums s;
+    slabSums b(profiles ? profiles->nBins() : 0);
     Map<label> histogram;
-
-    for (const parcelType& p : cloud)
-    {
-        ++nParticles;
-        nPrimaries += p.nPrimary();
-        if (p.nPrimary() > 1)
-        {
-            ++nAgglomerates;
-            nPrimariesInAgglomerates += p.nPrimary();
-            if (writeTime)
-            {
-                ++histogram(p.nPrimary(), 0);
-            }
-        }
-        maxPrimaries = max(maxPrimaries, p.nPrimary());
-        sumD += p.d();
-        Dmax = max(Dmax, p.d());
-        mass += p.nParticle()*p.mass();
-
-        if (profiles)
-        {
-            // The position of the collision stage where known
-            const label b = profiles->bin
-            (
-                p.stage().positionKnown()
-              ? p.stage().knownPosition() : p.position()
-            );
-            if (b >= 0)
-            {
-                visits[b] += 1;
-                volume[b] += p.nParticle()*p.volume();
-                sumDBin[b] += p.d();
-                sumU[b] += p.U();
-                sumUU[b] += sqr(p.U() - K[b]);
-            }
-        }
-    }
-
-    reduce(nParticles, sumOp<label>());
-    reduce(nPrimaries, sumOp<label>());
-    reduce(nAgglomerates, sumOp<label>());
-    reduce(nPrimariesInAgglomerates, sumOp<label>());
-    reduce(maxPrimaries, maxOp<label>());
-    reduce(sumD, sumOp<scalar>());
-    reduce(Dmax, maxOp<scalar>());
-    reduce(mass, sumOp<scalar>());
-
+    sumParticles(profiles, s, b, histogram, writeTime);
+    s.reduce();
     if (profiles)
     {
-        // Events at their contact points
-        forAll(step.eventPoint, k)
-        {
-            const label b = profiles->bin(step.eventPoint[k]);
-            if (b >= 0)
-            {
-                colBin[b] += 1;
-                if (step.eventCategory[k] == encounterMemory::FIRST)
-                {
-                    colFirstBin[b] += 1;
-                }
-                if (step.eventAgglomerates[k])
-                {
-                    aggBin[b] += 1;
-                }
-            }
-        }
-
-        reduce(colBin, sumOp<scalarField>());
-        reduce(colFirstBin, sumOp<scalarField>());
-        reduce(aggBin, sumOp<scalarField>());
-        reduce(visits, sumOp<scalarField>());
-        reduce(volume, sumOp<scalarField>());
-        reduce(sumDBin, sumOp<scalarField>());
-        reduce(sumU, sumOp<vectorField>());
-        reduce(sumUU, sumOp<symmTensorField>());
-
-        profiles->addEvents(colBin, colFirstBin, aggBin);
-        profiles->addParticles(visits, volume, sumDBin, sumU, sumUU);
+        binEvents(step, *profiles, b);
+        b.reduce();
+        profiles->addEvents(b.colBin, b.colFirstBin, b.aggBin);
+        profiles->addParticles(b.visits, b.volume, b.sumDBin, b.sumU, b.sumUU);
     }
 
     st.writeStep
     (
-        cloud.db().time().value(),
-        nParticles,
-        nPrimaries,
-        nAgglomerates,
-        nPrimariesInAgglomerates,
-        maxPrimaries,
-        nParticles ? sumD/nParticles : 0,
-        Dmax,
-        mass
+        runTime.value(),
+        s.nParticles,
+        s.nPrimaries,
+        s.nAgglomerates,
+        s.nPrimariesInAgglomerates,
+        s.maxPrimaries,
+        s.nParticles ? s.sumD/s.nParticles : 0,
+        s.Dmax,
+        s.mass
     );
 
     if (writeTime)
@@ -234,8 +279,8 @@ void Foam::HardSphereStatistics<CloudType>::postEvolve()
         << " (step " << globalCounts[hs::AGG]
         << "), nWall " << c[hs::WALL]
         << ", suppressed " << c[hs::SUPPRESSED]
-        << ", particles " << nParticles
-        << ", agglomerates " << nAgglomerates << endl;
+        << ", particles " << s.nParticles
+        << ", agglomerates " << s.nAgglomerates << endl;
 }
 
 
