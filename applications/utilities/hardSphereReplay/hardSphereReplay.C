@@ -99,6 +99,8 @@ using namespace Foam;
 #include "replayVariants.H"
 #include "writeEvents.H"
 #include "writeReplay.H"
+#include "readEvents.H"
+#include "replayConfigurations.H"
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -164,200 +166,32 @@ int main(int argc, char *argv[])
             << " (all first)" << exit(FatalError);
     }
 
-    // The logs, in a deterministic order
+    // The logs, in a deterministic order; the outputs checked before any
+    // work (replayOutput.H)
     const fileName dir(collisionEventLog::folder(runTime, cloudName));
-    fileNameList files(readDir(dir, fileName::FILE));
-    Foam::sort(files);
-    fileNameList logs;
-    for (const fileName& f : files)
-    {
-        if (f.hasExt("bin") && f.startsWith("events"))
-        {
-            logs.append(f);
-        }
-    }
-
-    // The outputs checked before any work (replayOutput.H)
+    const fileNameList logs(logFiles(dir));
     checkTarget("json", jsonOut, dir, logs);
     if (keepEvents)
     {
         checkTarget("eventsOut", args.get<fileName>("eventsOut"), dir, logs);
     }
-    DynamicList<collisionEvent> events;
-    label nLogged = 0;
     const label nFiles = logs.size();
     wordList loggedBranches;
-    for (const fileName& f : logs)
-    {
-        wordList branches;
-        const List<collisionEvent> fileEvents
-        (
-            collisionEventFile::read(dir/f, branches)
-        );
-        if (loggedBranches.empty())
-        {
-            loggedBranches = branches;
-        }
-        else if (branches != loggedBranches)
-        {
-            FatalErrorInFunction
-                << "The log files of " << dir << " name different"
-                << " branches: " << logs.first() << " " << loggedBranches
-                << ", " << f << " " << branches << " (runs of different"
-                << " agglomeration models in one folder)" << exit(FatalError);
-        }
-        nLogged += fileEvents.size();
-        for (const collisionEvent& e : fileEvents)
-        {
-            if (which == "all" || e.category == 0)
-            {
-                events.append(e);
-            }
-        }
-    }
-    if (!nFiles)
-    {
-        FatalErrorInFunction
-            << "No collision event log in " << dir << nl
-            << "(run the case with eventLog true; in hardSphereCoeffs)"
-            << exit(FatalError);
-    }
-    checkLogCount(runTime, cloudName, "collisionEventLog", dir, nLogged);
-    std::stable_sort
+    const DynamicList<collisionEvent> events
     (
-        events.begin(), events.end(),
-        [](const collisionEvent& a, const collisionEvent& b)
-        {
-            if (a.timeIndex != b.timeIndex) return a.timeIndex < b.timeIndex;
-            if (a.time != b.time) return a.time < b.time;
-            if (a.proc[0] != b.proc[0]) return a.proc[0] < b.proc[0];
-            if (a.id[0] != b.id[0]) return a.id[0] < b.id[0];
-            if (a.proc[1] != b.proc[1]) return a.proc[1] < b.proc[1];
-            return a.id[1] < b.id[1];
-        }
+        readEvents(runTime, cloudName, dir, logs, which, loggedBranches)
     );
 
     // The configurations: the run's kernel (and its variants) unless
     // kernel dictionaries are given
-    List<replayResult> results;
-    if (args.size() <= 1 || args.found("variants"))
-    {
-        const IOdictionary props
+    const List<replayResult> results
+    (
+        replayConfigurations
         (
-            IOobject
-            (
-                cloudName + "Properties", runTime.constant(), runTime,
-                IOobject::MUST_READ, IOobject::NO_WRITE, false
-            )
-        );
-        const dictionary& coeffs =
-            props.subDict("subModels").subDict("hardSphereCoeffs");
-        dictionary runKernel;
-        for (const word& key : hardSphereCollisionKernel::keys(coeffs))
-        {
-            if (coeffs.found(key))
-            {
-                runKernel.add(coeffs.lookupEntry(key, keyType::LITERAL));
-            }
-        }
-        results.append
-        (
-            replay
-            (
-                "run", props.objectPath(), runKernel, events,
-                loggedBranches, true, keepEvents
-            )
-        );
-        if (args.found("variants"))
-        {
-            const fileName f(args.get<fileName>("variants"));
-            const dictionary variants(readVariants(f));
-            const word runModel
-            (
-                runKernel.getOrDefault<word>("agglomerationModel", "none")
-            );
-            for (const entry& v : variants)
-            {
-                if (!v.isDict())
-                {
-                    FatalIOErrorInFunction(variants)
-                        << "Variant " << v.keyword() << " is not a"
-                        << " dictionary of kernel entries"
-                        << exit(FatalIOError);
-                }
-                const fileName named(f/v.keyword());
-                dictionary kd(applyVariant(runKernel, v.dict(), named));
-
-                // Another model: the run model's coefficients do not apply
-                // (unknown entries of the other model)
-                const word model(kd.get<word>("agglomerationModel"));
-                if (model != runModel && !v.dict().found(runModel + "Coeffs"))
-                {
-                    kd.remove(runModel + "Coeffs");
-                }
-                hardSphereInput::checkKeys
-                (
-                    kd, hardSphereCollisionKernel::keys(kd)
-                );
-                results.append
-                (
-                    replay
-                    (
-                        v.keyword(), f, kd, events, loggedBranches, false,
-                        keepEvents
-                    )
-                );
-            }
-        }
-    }
-    for (label a = 1; a < args.size(); ++a)
-    {
-        const fileName f(args[a]);
-        IFstream is(f);
-        if (!is.good())
-        {
-            FatalErrorInFunction
-                << "Cannot read the kernel dictionary " << f
-                << exit(FatalError);
-        }
-        const dictionary dict(is);
-        hardSphereInput::checkKeys(dict, hardSphereCollisionKernel::keys(dict));
-        results.append
-        (
-            replay
-            (
-                f.nameLessExt(), f, dict, events, loggedBranches, false,
-                keepEvents
-            )
-        );
-    }
-
-    // Names: one per configuration; the base one of them
-    wordList names(results.size());
-    forAll(results, c)
-    {
-        names[c] = results[c].name;
-        for (label b = 0; b < c; ++b)
-        {
-            if (names[b] == names[c])
-            {
-                FatalErrorInFunction
-                    << "Two configurations are named " << names[c]
-                    << ": each needs its own name" << exit(FatalError);
-            }
-        }
-    }
-    label base = 0;
-    if (args.found("base"))
-    {
-        base = names.find(args.get<word>("base"));
-        if (base < 0)
-        {
-            FatalErrorInFunction
-                << "-base " << args.get<word>("base") << " is not a"
-                << " configuration; valid: " << names << exit(FatalError);
-        }
-    }
+            args, runTime, cloudName, events, loggedBranches, keepEvents
+        )
+    );
+    const label base = baseConfiguration(args, results);
 
     writeReplay
     (
