@@ -92,6 +92,7 @@ using namespace Foam;
 #include "replayLogCount.H"
 #include "replayVariants.H"
 #include "breakupReplayReport.H"
+#include "readBreakupEvents.H"
 
 namespace
 {
@@ -162,6 +163,66 @@ breakupReplayResult replay
     return r;
 }
 
+//- The collision kernel's entries of the run's cloud (its material and
+//  structure)
+dictionary runKernelDict(const dictionary& subModels)
+{
+    const dictionary& hsCoeffs = subModels.subDict("hardSphereCoeffs");
+    dictionary kernelDict;
+    for (const word& key : hardSphereCollisionKernel::keys(hsCoeffs))
+    {
+        if (hsCoeffs.found(key))
+        {
+            kernelDict.add(hsCoeffs.lookupEntry(key, keyType::LITERAL));
+        }
+    }
+    return kernelDict;
+}
+
+
+//- The replays of the run's coefficients and of each variant of the file
+//  variantsFile (none if empty), each merged into the run's
+List<breakupReplayResult> replayConfigurations
+(
+    const word& model,
+    const dictionary& runCoeffs,
+    const hardSphereCollisionKernel& collision,
+    const UList<breakupEvent>& events,
+    const List<wordList>& names,
+    const fileName& variantsFile
+)
+{
+    List<breakupReplayResult> results;
+    results.append
+    (
+        replay("run", model, runCoeffs, collision, events, names)
+    );
+    if (variantsFile.empty())
+    {
+        return results;
+    }
+    const dictionary variants(readVariants(variantsFile));
+    for (const entry& v : variants)
+    {
+        if (!v.isDict() || v.keyword() == "run")
+        {
+            FatalIOErrorInFunction(variants)
+                << "Variant " << v.keyword() << " must be a dictionary"
+                << " of " << model << "Coeffs entries, not named run"
+                << exit(FatalIOError);
+        }
+        const dictionary coeffs
+        (
+            applyVariant(runCoeffs, v.dict(), variants.name()/v.keyword())
+        );
+        results.append
+        (
+            replay(v.keyword(), model, coeffs, collision, events, names)
+        );
+    }
+    return results;
+}
+
 } // End anonymous namespace
 
 
@@ -205,67 +266,20 @@ int main(int argc, char *argv[])
         args.getOrDefault<fileName>("json", dir/"breakupReplay.json")
     );
 
-    // The logs, in a deterministic order
-    fileNameList files(readDir(dir, fileName::FILE));
-    Foam::sort(files);
-    fileNameList logs;
-    for (const fileName& f : files)
-    {
-        if (f.hasExt("bin") && f.startsWith("events"))
-        {
-            logs.append(f);
-        }
-    }
-    if (logs.empty())
-    {
-        FatalErrorInFunction
-            << "No break-up event log in " << dir << nl << "(run the case"
-            << " with eventLog true; in the break-up model's coefficients)"
-            << exit(FatalError);
-    }
+    // The logs, in a deterministic order; the output checked before any
+    // work; the events
+    const fileNameList logs(breakupLogFiles(dir));
     checkTarget("json", jsonOut, dir, logs);
-
-    // The header of every file: the same model, mechanisms and values
     List<wordList> names;
-    DynamicList<breakupEvent> events;
-    for (const fileName& f : logs)
-    {
-        List<wordList> inFile;
-        events.append(eventFile<breakupEvent>::read(dir/f, inFile));
-        if (names.empty())
-        {
-            names = inFile;
-        }
-        else if (inFile != names)
-        {
-            FatalErrorInFunction
-                << "The log " << dir/f << " names " << inFile << "; the"
-                << " first log names " << names << ": logs of different"
-                << " models" << exit(FatalError);
-        }
-    }
-    const wordList& mechanisms = names[0];
-    const word model(names[1].size() == 1 ? names[1][0] : word::null);
-    if (model.empty())
-    {
-        FatalErrorInFunction
-            << "The log's header names the model " << names[1]
-            << " (one name)" << exit(FatalError);
-    }
-    checkLogCount(runTime, cloudName, "breakupEventLog", dir, events.size());
-    std::stable_sort
+    word model;
+    const DynamicList<breakupEvent> events
     (
-        events.begin(), events.end(),
-        [](const breakupEvent& a, const breakupEvent& b)
-        {
-            if (a.timeIndex != b.timeIndex) return a.timeIndex < b.timeIndex;
-            if (a.proc != b.proc) return a.proc < b.proc;
-            return a.id < b.id;
-        }
+        readBreakupEvents(runTime, cloudName, dir, logs, names, model)
     );
+    const wordList& mechanisms = names[0];
 
-    // The run's configuration: its break-up coefficients, the material and
-    // structure of its collision kernel
+    // The run's configuration (its break-up coefficients, the material and
+    // structure of its collision kernel) and the variants
     const IOdictionary props
     (
         IOobject
@@ -275,51 +289,18 @@ int main(int argc, char *argv[])
         )
     );
     const dictionary& subModels = props.subDict("subModels");
-    const dictionary& hsCoeffs = subModels.subDict("hardSphereCoeffs");
-    dictionary kernelDict;
-    for (const word& key : hardSphereCollisionKernel::keys(hsCoeffs))
-    {
-        if (hsCoeffs.found(key))
-        {
-            kernelDict.add(hsCoeffs.lookupEntry(key, keyType::LITERAL));
-        }
-    }
-    const hardSphereCollisionKernel collision(kernelDict);
-    const dictionary& runCoeffs = subModels.subDict(model + "Coeffs");
-
-    List<breakupReplayResult> results;
-    results.append
+    const hardSphereCollisionKernel collision(runKernelDict(subModels));
+    const List<breakupReplayResult> results
     (
-        replay("run", model, runCoeffs, collision, events, names)
-    );
-    if (args.found("variants"))
-    {
-        const dictionary variants
+        replayConfigurations
         (
-            readVariants(args.get<fileName>("variants").expand())
-        );
-        for (const entry& v : variants)
-        {
-            if (!v.isDict() || v.keyword() == "run")
-            {
-                FatalIOErrorInFunction(variants)
-                    << "Variant " << v.keyword() << " must be a dictionary"
-                    << " of " << model << "Coeffs entries, not named run"
-                    << exit(FatalIOError);
-            }
-            const dictionary coeffs
-            (
-                applyVariant
-                (
-                    runCoeffs, v.dict(), variants.name()/v.keyword()
-                )
-            );
-            results.append
-            (
-                replay(v.keyword(), model, coeffs, collision, events, names)
-            );
-        }
-    }
+            model, subModels.subDict(model + "Coeffs"), collision, events,
+            names,
+            args.found("variants")
+          ? fileName(args.get<fileName>("variants").expand())
+          : fileName::null
+        )
+    );
 
     // Table and JSON
     const std::string js
