@@ -89,9 +89,6 @@ def test_case_settings_reject_unknown_entries(tmp_path, foam_env, tutorial,
     (tmp_path / "system").mkdir()
     f = tmp_path / "system" / "caseSettings"
     f.write_text(text)
-    for sibling in {"shearFlow": ["shearTheory", "shearCase"]}.get(
-            script, []):
-        tutorial_module(tutorial, sibling)   # imported by the script
     module = tutorial_module(tutorial, script)
     assert len(module.read_settings(tmp_path)) > 10
     f.write_text(text + "\nnParticels 10;\n")

@@ -17,8 +17,6 @@ import pytest
 from aggloTools.runner import project_dir, tutorial_module
 
 TUT = project_dir() / "tutorials" / "bendDeposition"
-# the driver's siblings first
-tutorial_module("bendDeposition", "bendPlots")
 efficiency = tutorial_module("bendDeposition", "bendEfficiency")
 agglomeration = tutorial_module("bendDeposition", "bendAgglomeration")
 driver = tutorial_module("bendDeposition", "bendDeposition")

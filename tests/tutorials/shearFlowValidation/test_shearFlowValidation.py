@@ -203,7 +203,6 @@ def test_first_contacts_spin_reaches_the_eam_only(ci_results, tmp_path):
     constructed log): zeroing them changes EAM outcomes (its Eq. 21 holds
     the rotational energy), never the MAM's."""
     from aggloTools import eventlog
-    tutorial_module("shearFlowValidation", "shearCase")
     fc = tutorial_module("shearFlowValidation", "shearFirstContacts")
     _, s, tut = ci_results
     case = tmp_path / "EAM"

@@ -14,7 +14,6 @@ import pytest
 from aggloTools import regression as reg
 from aggloTools.runner import tutorial_module
 
-tutorial_module("shearFlowValidation", "shearTheory")
 st = tutorial_module("shearFlowValidation", "shearStatements")
 theory = tutorial_module("shearFlowValidation", "shearTheory")
 

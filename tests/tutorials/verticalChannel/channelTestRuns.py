@@ -43,18 +43,8 @@ def run_smoke(tmp, np_):
 
 
 def script(name):
-    """A script of the tutorial as a module, after the siblings it
-    imports (all of them, so that any script can be asked for)."""
-    for sibling in ("channel", "channelParticles", "channelPlots",
-                    "channelMatrixPlot",
-                    "channelStatements", "channelContacts",
-                    "channelRegression", "channelReport",
-                    "channelPost", "channelRegimeTrend", "channelRegimePairs",
-                    "channelRegimeNeeds", "channelRegimeVerdict",
-                    "channelRegimeAnalysis",
-                    "channelRegimeReport", "channelRegimePlots",
-                    "channelRegime"):
-        tutorial_module("verticalChannel", sibling)
+    """A script of the tutorial as a module (the siblings it imports
+    found in the tutorial's folder)."""
     return tutorial_module("verticalChannel", name)
 
 

@@ -184,7 +184,6 @@ def test_restart_reproduces_the_agglomeration_stage(smoke_runs, tmp_path):
 
 def _particles_module():
     """channelParticles, after channel that it imports."""
-    tutorial_module("verticalChannel", "channel")
     return tutorial_module("verticalChannel", "channelParticles")
 
 

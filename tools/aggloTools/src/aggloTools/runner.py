@@ -46,14 +46,35 @@ def run(cmd, cwd, log, check=True, timeout=600):
     return res
 
 
+def _siblings(path):
+    """The scripts of the folder of the script at path that it imports
+    (import statements anywhere in it, found by ast)."""
+    import ast
+    path = Path(path)
+    names = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            names |= {a.name.split(".")[0] for a in node.names}
+        elif isinstance(node, ast.ImportFrom) and not node.level \
+                and node.module:
+            names.add(node.module.split(".")[0])
+    found = (path.parent / f"{n}.py" for n in sorted(names))
+    return [f for f in found if f.is_file() and f != path]
+
+
 def _script_module(path, name):
     """The Python script at path imported as the module `name` (kept in
-    sys.modules: a second call returns the same module)."""
+    sys.modules: a second call returns the same module), after the
+    scripts of its folder that it imports (found in its source: no list
+    to keep, no search-path edit; the import graph has no cycle, a test
+    checks it)."""
     import importlib.util
     import sys
     if name in sys.modules and \
             getattr(sys.modules[name], "__file__", None) == str(path):
         return sys.modules[name]
+    for sibling in _siblings(path):
+        _script_module(sibling, sibling.stem)
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
@@ -64,8 +85,7 @@ def _script_module(path, name):
 def tutorial_module(tutorial, script):
     """A tutorial's Python script (tutorials/<tutorial>/<script>.py of the
     project) imported as the module `script`, for the tests and benchmarks
-    that call its functions; a script that imports a sibling must be
-    loaded after it."""
+    that call its functions (its siblings found as it imports them)."""
     return _script_module(
         project_dir() / "tutorials" / tutorial / f"{script}.py", script)
 
