@@ -10,6 +10,7 @@ Description
 #include "../testHelpers.H"
 #include "collisionEventFile.H"
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <unistd.h>
@@ -232,6 +233,30 @@ TEST(CollisionEventFile, RejectsAnotherLayout)
         Foam::error
     );
     std::remove(f.c_str());
+}
+
+TEST(CollisionEventFile, WrittenForPython)
+{
+    // Records 5 and 6 of sample() in a log file: where AGGLO_LAYOUT_DIR
+    // names a folder, left there for tests/aggloTools/test_eventLayouts.py
+    // (the Python reader's layout against this one), else read back here
+    const char* dir = ::getenv("AGGLO_LAYOUT_DIR");
+    const fileName f
+    (
+        dir ? fileName(dir)/"collisionEvents.bin" : tmpFile("P")
+    );
+    std::remove(f.c_str());
+    const List<collisionEvent> two({sample(5), sample(6)});
+    collisionEventFile::append(f, two, eamBranches);
+    wordList branches;
+    const List<collisionEvent> back(collisionEventFile::read(f, branches));
+    ASSERT_EQ(back.size(), 2);
+    expectSame(back[0], two[0]);
+    expectSame(back[1], two[1]);
+    if (!dir)
+    {
+        std::remove(f.c_str());
+    }
 }
 
 // ************************************************************************* //
