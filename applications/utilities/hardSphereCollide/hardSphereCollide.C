@@ -150,6 +150,151 @@ hardSphereState readParticle(const dictionary& dict, const word& name)
     );
 }
 
+//- Stop unless the particles touch (within contactTolerance of the
+//  contact distance) and approach each other
+void checkContact
+(
+    const dictionary& dict,
+    const hardSphereState& p1,
+    const hardSphereState& p2,
+    const binaryCollision& pair
+)
+{
+    const scalar ell = 0.5*(p1.d + p2.d);
+    const scalar dist = mag(p2.x - p1.x);
+    const scalar tol =
+        dict.getOrDefault<scalar>("contactTolerance", 1e-6);
+    if (!(dist > 0) || mag(dist - ell) > tol*ell)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The particles are not in contact: centre distance "
+            << dist << " m, contact distance (d1 + d2)/2 = " << ell
+            << " m (gap " << dist - ell << " m, relative "
+            << (dist - ell)/ell << ", contactTolerance " << tol << ")." << nl
+            << "    Place particle2 at particle1.position + (d1 + d2)/2 n."
+            << exit(FatalIOError);
+    }
+    if (!pair.approaching())
+    {
+        FatalIOErrorInFunction(dict)
+            << "The particles are not approaching: u_n = (U2 - U1).n = "
+            << pair.un() << " m/s >= 0 with n = " << pair.n()
+            << " pointing from particle1 to particle2." << nl
+            << "    A collision needs u_n < 0."
+            << exit(FatalIOError);
+    }
+}
+
+
+//- The intermediates of the outcome as JSON entries: those of every
+//  model, then the model's own
+void writeIntermediates
+(
+    std::ostream& os,
+    const agglomerationModel& model,
+    const collisionOutcome& out
+)
+{
+    const FixedList<scalar, 3> common(out.commonValues());
+    wordList names(collisionOutcome::commonValueNames);
+    names.append(model.valueNames());
+    os  << "  \"intermediates\": {\n";
+    forAll(names, i)
+    {
+        const scalar v =
+            i < common.size() ? common[i] : out.values[i - common.size()];
+        os  << "    \"" << names[i].c_str() << "\": " << num(v)
+            << (i + 1 < names.size() ? ",\n" : "\n");
+    }
+    os  << "  },\n";
+}
+
+
+//- The mass, momentum and kinetic energy before and after as JSON
+void writeBalance
+(
+    std::ostream& os,
+    const hardSphereState& p1,
+    const hardSphereState& p2,
+    const collisionOutcome& out
+)
+{
+    const scalar mBefore = p1.mass() + p2.mass();
+    const vector PBefore = p1.momentum() + p2.momentum();
+    vector PAfter(Zero);
+    scalar mAfter = 0;
+    scalar KEafter = 0;
+    if (out.agglomerates)
+    {
+        PAfter = out.agglomerate.momentum();
+        mAfter = out.agglomerate.mass();
+        KEafter = out.agglomerate.kineticEnergy();
+    }
+    else
+    {
+        PAfter = out.p1.momentum() + out.p2.momentum();
+        mAfter = out.p1.mass() + out.p2.mass();
+        KEafter = out.p1.kineticEnergy() + out.p2.kineticEnergy();
+    }
+    os  << "  \"balance\": {\n"
+        << "    \"massBefore\": " << num(mBefore) << ",\n"
+        << "    \"massAfter\": " << num(mAfter) << ",\n"
+        << "    \"momentumBefore\": " << vec(PBefore) << ",\n"
+        << "    \"momentumAfter\": " << vec(PAfter) << ",\n"
+        << "    \"kineticEnergyBefore\": "
+        << num(p1.kineticEnergy() + p2.kineticEnergy()) << ",\n"
+        << "    \"kineticEnergyAfter\": " << num(KEafter) << "\n"
+        << "  }\n";
+}
+
+
+//- The outcome of the collision of p1 and p2 as the JSON document
+std::string outcomeJson
+(
+    const hardSphereCollisionKernel& kernel,
+    const hardSphereState& p1,
+    const hardSphereState& p2,
+    const binaryCollision& pair,
+    const collisionOutcome& out
+)
+{
+    std::ostringstream os;
+    os  << "{\n"
+        << "  \"agglomerationModel\": \""
+        << kernel.agglomeration().type() << "\",\n"
+        << "  \"structureModel\": "
+        << (kernel.hasStructure()
+            ? "\"" + std::string(kernel.structure().type()) + "\""
+            : std::string("null")) << ",\n"
+        << "  \"collisionType\": \""
+        << collisionOutcome::collisionTypeNames[out.type] << "\",\n"
+        << "  \"branch\": \""
+        << kernel.agglomeration().branchNames()[out.branch].c_str()
+        << "\",\n"
+        << "  \"agglomerate\": " << (out.agglomerates ? "true" : "false")
+        << ",\n"
+        << "  \"normal\": " << vec(pair.n()) << ",\n"
+        << "  \"impactNormalVelocity\": " << num(pair.un()) << ",\n"
+        << "  \"slip\": " << num(pair.s()) << ",\n";
+
+    if (out.agglomerates)
+    {
+        os  << "  \"particles\": null,\n"
+            << "  \"agglomerateState\": " << state(out.agglomerate, "  ")
+            << ",\n";
+    }
+    else
+    {
+        os  << "  \"particles\": [" << state(out.p1, "    ") << ", "
+            << state(out.p2, "    ") << "],\n"
+            << "  \"agglomerateState\": null,\n";
+    }
+    writeIntermediates(os, kernel.agglomeration(), out);
+    writeBalance(os, p1, p2, out);
+    os  << "}\n";
+    return os.str();
+}
+
 } // End anonymous namespace
 
 
@@ -203,114 +348,11 @@ int main(int argc, char *argv[])
     const hardSphereState p1(readParticle(dict, "particle1"));
     const hardSphereState p2(readParticle(dict, "particle2"));
 
-    // Contact check
-    const scalar ell = 0.5*(p1.d + p2.d);
-    const scalar dist = mag(p2.x - p1.x);
-    const scalar tol =
-        dict.getOrDefault<scalar>("contactTolerance", 1e-6);
-    if (!(dist > 0) || mag(dist - ell) > tol*ell)
-    {
-        FatalIOErrorInFunction(dict)
-            << "The particles are not in contact: centre distance "
-            << dist << " m, contact distance (d1 + d2)/2 = " << ell
-            << " m (gap " << dist - ell << " m, relative "
-            << (dist - ell)/ell << ", contactTolerance " << tol << ")." << nl
-            << "    Place particle2 at particle1.position + (d1 + d2)/2 n."
-            << exit(FatalIOError);
-    }
-
-    // Approach check
     const binaryCollision pair(p1, p2);
-    if (!pair.approaching())
-    {
-        FatalIOErrorInFunction(dict)
-            << "The particles are not approaching: u_n = (U2 - U1).n = "
-            << pair.un() << " m/s >= 0 with n = " << pair.n()
-            << " pointing from particle1 to particle2." << nl
-            << "    A collision needs u_n < 0."
-            << exit(FatalIOError);
-    }
+    checkContact(dict, p1, p2, pair);
 
     const collisionOutcome out(kernel.collide(p1, p2));
-
-    const scalar mBefore = p1.mass() + p2.mass();
-    const vector PBefore = p1.momentum() + p2.momentum();
-    vector PAfter(Zero);
-    scalar mAfter = 0;
-    scalar KEafter = 0;
-    if (out.agglomerates)
-    {
-        PAfter = out.agglomerate.momentum();
-        mAfter = out.agglomerate.mass();
-        KEafter = out.agglomerate.kineticEnergy();
-    }
-    else
-    {
-        PAfter = out.p1.momentum() + out.p2.momentum();
-        mAfter = out.p1.mass() + out.p2.mass();
-        KEafter = out.p1.kineticEnergy() + out.p2.kineticEnergy();
-    }
-
-    std::ostringstream os;
-    os  << "{\n"
-        << "  \"agglomerationModel\": \""
-        << kernel.agglomeration().type() << "\",\n"
-        << "  \"structureModel\": "
-        << (kernel.hasStructure()
-            ? "\"" + std::string(kernel.structure().type()) + "\""
-            : std::string("null")) << ",\n"
-        << "  \"collisionType\": \""
-        << collisionOutcome::collisionTypeNames[out.type] << "\",\n"
-        << "  \"branch\": \""
-        << kernel.agglomeration().branchNames()[out.branch].c_str()
-        << "\",\n"
-        << "  \"agglomerate\": " << (out.agglomerates ? "true" : "false")
-        << ",\n"
-        << "  \"normal\": " << vec(pair.n()) << ",\n"
-        << "  \"impactNormalVelocity\": " << num(pair.un()) << ",\n"
-        << "  \"slip\": " << num(pair.s()) << ",\n";
-
-    if (out.agglomerates)
-    {
-        os  << "  \"particles\": null,\n"
-            << "  \"agglomerateState\": " << state(out.agglomerate, "  ")
-            << ",\n";
-    }
-    else
-    {
-        os  << "  \"particles\": [" << state(out.p1, "    ") << ", "
-            << state(out.p2, "    ") << "],\n"
-            << "  \"agglomerateState\": null,\n";
-    }
-
-    // The intermediates: those of every model, then the model's own
-    {
-        const agglomerationModel& model = kernel.agglomeration();
-        const FixedList<scalar, 3> common(out.commonValues());
-        wordList names(collisionOutcome::commonValueNames);
-        names.append(model.valueNames());
-        os  << "  \"intermediates\": {\n";
-        forAll(names, i)
-        {
-            const scalar v =
-                i < common.size() ? common[i] : out.values[i - common.size()];
-            os  << "    \"" << names[i].c_str() << "\": " << num(v)
-                << (i + 1 < names.size() ? ",\n" : "\n");
-        }
-        os  << "  },\n";
-    }
-    os  << "  \"balance\": {\n"
-        << "    \"massBefore\": " << num(mBefore) << ",\n"
-        << "    \"massAfter\": " << num(mAfter) << ",\n"
-        << "    \"momentumBefore\": " << vec(PBefore) << ",\n"
-        << "    \"momentumAfter\": " << vec(PAfter) << ",\n"
-        << "    \"kineticEnergyBefore\": "
-        << num(p1.kineticEnergy() + p2.kineticEnergy()) << ",\n"
-        << "    \"kineticEnergyAfter\": " << num(KEafter) << "\n"
-        << "  }\n"
-        << "}\n";
-
-    std::cout << os.str() << std::flush;
+    std::cout << outcomeJson(kernel, p1, p2, pair, out) << std::flush;
 
     return 0;
 }
