@@ -69,6 +69,21 @@ def test_run_logged_and_solver(tmp_path):
         "1\nEnd\n")                   # appended to the first run's log
 
 
+@pytest.mark.parametrize("options", [[], ["--oversubscribe"]])
+def test_solver_on_ranks_named(tmp_path, capsys, options):
+    """A solver run through mpirun is announced by its name and ranks,
+    with or without mpirun's own options before it (with them, the
+    option was taken for the solver's name)."""
+    mpirun = tmp_path / "mpirun"
+    mpirun.write_text("#!/bin/sh\necho End\n")
+    mpirun.chmod(0o755)
+    stages.run_solver(tmp_path, [str(mpirun), "-np", "2", *options,
+                                 "/opt/bin/aggloPimpleFoam", "-parallel"],
+                      "x", lambda c: "", 60)
+    assert f"Running aggloPimpleFoam (2 processes) on {tmp_path}" in \
+        capsys.readouterr().out
+
+
 def test_pool_collects_the_failures():
     done = []
 
