@@ -11,7 +11,7 @@ import channel
 
 #: The order of the configurations on the axis
 ORDER = ("C1", "C2", "C3", "C4", "R80", "R60")
-MODELS = ("EAM", "MAM")
+MODELS = channel.MODELS
 #: The panels: the quantity's key, its axis label
 PANELS = (("col", r"$f_{col}\,s^2$ [1/T*]"),
           ("agg", r"$f_{agg}\,s^2$ [1/T*]"),

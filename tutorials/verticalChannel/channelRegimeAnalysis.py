@@ -19,7 +19,7 @@ from aggloTools.stats import read_stats, read_table
 
 HERE = channel.HERE
 
-MODELS = ("EAM", "MAM")
+MODELS = channel.MODELS
 #: AB16 Table 3 / D.6 (channel.TABLE_D6), C1, and the paper's u_tau/U_B
 PAPER = {"f_col_scaled": channel.TABLE_D6["C1"]["fcol"],
          "f_agg_scaled": channel.TABLE_D6["C1"]["fagg"],

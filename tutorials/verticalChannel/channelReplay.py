@@ -28,7 +28,7 @@ import channel
 import channelPost
 
 HERE = channelPost.HERE
-MODELS = ("EAM", "MAM")
+MODELS = channel.MODELS
 
 
 def replay(pname, runs_dir=None, reference=False):
