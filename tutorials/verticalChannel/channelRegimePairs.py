@@ -1,6 +1,7 @@
 """verticalChannel regime study: the variants one shortcut apart,
-compared. Three checks (CHECKS), each over pairs (variant, base) that
-differ in that shortcut alone:
+compared. Three checks (CHECKS), each over the pairs (variant, base) whose
+presets differ in that shortcut alone (check_pairs: derived from the
+presets, not listed):
 
 * the particle number: each 3 x 10^5 variant (s = 20) over its 10^5 base
   (s = 60), the same grid and phases. The frequencies are compared
@@ -25,27 +26,46 @@ not change it); beyond it the quantity depends on the shortcut. Per
 pair, the near-wall over centre concentration at the start of
 agglomeration of both runs (no sigma: the two values)."""
 
+import channel
 import channelRegimeTrend as trend
 from aggloTools import uncertainty
+from channelRegimeVariants import VARIANTS
 
-#: The checks: their pairs (variant, base), the heading of their lines
-#: in regime.txt and the words for a ratio beyond Z_CONSISTENT
+#: Entries in which two presets may differ without being another
+#: shortcut: the step in seconds (dtStar's), the write interval, and the
+#: velocity solver's tolerance (1e-6 or 1e-8 give the same flow within
+#: what a regression over 100 T* resolves: bench/channelSolverSettings.py,
+#: README)
+NOT_A_SHORTCUT = {"deltaT", "writeStar", "UTolerance"}
+
+#: The checks: the preset entries each changes alone (its pairs are the
+#: variants whose presets differ in those alone and are `alike` otherwise,
+#: the variant the one with the larger `order` value), the heading of their lines in regime.txt and
+#: the words for a ratio beyond Z_CONSISTENT
 CHECKS = {
     "particleNumber": {
-        "pairs": (("regime32n3", "regime32"), ("regime48n3", "regime48")),
+        "entries": {"nParticles", "couplingScale"},
+        "order": lambda p: p["nParticles"],
         "head": "Particle number (3e5 over 1e5 particles, the same grid "
                 "and phases; the s^2 scaling holds where the ratio is 1 "
                 "within {z:g} sigma):",
         "differs": "depends on N"},
     "phaseLength": {
-        "pairs": (("regime32", "small"), ("regime64", "regime64short")),
+        "entries": {"unladen", "release", "dispersion", "agglomeration",
+                    "window"},
+        "order": lambda p: p["agglomeration"],
         "head": "Phase lengths (the paper's 240/100/520/200 T* over "
                 "small's 60/10/30/60, the same grid and particles; the "
                 "phases do not matter where the ratio is 1 within {z:g} "
                 "sigma):",
         "differs": "depends on the phases"},
     "wallNormal": {
-        "pairs": (("printed", "regime64"),),
+        "entries": {"n", "yGrading", "dtStar"},
+        "order": lambda p: p["n"][1],
+        # the cells across only (a grid refined in every direction is
+        # the grid trend's, channelRegimeTrend)
+        "alike": lambda a, b: (a["n"][0], a["n"][2]) == (b["n"][0],
+                                                         b["n"][2]),
         "head": "Wall-normal resolution (the printed 128 cells, first "
                 "cell centre at y+ 0.63, over regime64's 64, the same x "
                 "and z cells, phases and particles; the wall-normal grid "
@@ -87,6 +107,26 @@ def _near_wall(result):
     return (result.get("concentration") or {}).get("nearWallOverCentre")
 
 
+def shortcut(a, b):
+    """The entries in which presets a and b differ (settings dicts of
+    channel.preset), but NOT_A_SHORTCUT."""
+    keys = (set(a) | set(b)) - NOT_A_SHORTCUT - {"name"}
+    return {k for k in keys if a.get(k) != b.get(k)}
+
+
+def check_pairs(check, names=None):
+    """The pairs (variant, base) of the check among the presets names
+    (default: the study's VARIANTS; in their order): those whose presets
+    differ in the check's entries alone."""
+    c = CHECKS[check]
+    names = names or [n for n, _ in VARIANTS]
+    p = {n: channel.preset(n) for n in names}
+    alike = c.get("alike", lambda a, b: True)
+    return [(v, b) for v in names for b in names
+            if v != b and shortcut(p[v], p[b]) == c["entries"]
+            and alike(p[v], p[b]) and c["order"](p[v]) > c["order"](p[b])]
+
+
 def compare(res, models, check):
     """Per pair of the check whose variant and base both finished in res
     (run_post's): {"variant", "base", "nearWallOverCentre": [variant's,
@@ -95,7 +135,7 @@ def compare(res, models, check):
     done = {v["name"]: v["result"] for v in res["variants"]
             if v["result"]}
     out = []
-    for var, base in CHECKS[check]["pairs"]:
+    for var, base in check_pairs(check):
         missing = [n for n in (var, base) if n not in done]
         if missing:
             out.append({"variant": var, "base": base, "missing": missing})

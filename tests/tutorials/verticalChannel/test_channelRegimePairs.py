@@ -1,7 +1,8 @@
 """The regime study's variants one shortcut apart (channelRegimePairs.py):
 the ratio of a variant's scaled frequencies to its base's, its standard
-error by propagation, the verdict on the shortcut, and the pairs of both
-checks (particle number, phase lengths)."""
+error by propagation, the verdict on the shortcut, the pairs of the
+checks (particle number, phase lengths) and their derivation from the
+presets."""
 
 import math
 
@@ -109,3 +110,27 @@ def test_phase_lengths(pairs):
         "(z +6.7: depends on the phases)" in text
     assert "regime64 over regime64short: c_w/c_0 at the start of " \
         "agglomeration 3.85 / 1.4" in text
+
+
+def test_pairs_derived_from_the_presets(pairs):
+    """The pairs come from the presets (the entries in which they differ),
+    not from a list: the study's variants give exactly the pairs the study
+    was designed with; a preset that changes a second entry besides the
+    check's (the grid with the particle number: regime48n3 against
+    regime32) or the grid in every direction (regime48 against regime32,
+    the grid trend's) is no pair; the time step in seconds, the write
+    interval and the solver tolerance do not count as shortcuts."""
+    assert pairs.check_pairs("particleNumber") == [
+        ("regime32n3", "regime32"), ("regime48n3", "regime48")]
+    assert pairs.check_pairs("phaseLength") == [
+        ("regime32", "small"), ("regime64", "regime64short")]
+    assert pairs.check_pairs("wallNormal") == [("printed", "regime64")]
+    names = ["regime32", "regime48", "regime48n3"]
+    assert pairs.check_pairs("particleNumber", names) == [
+        ("regime48n3", "regime48")]
+    assert pairs.check_pairs("wallNormal", names) == []
+    channel = script("channel")
+    a, b = channel.preset("regime32"), channel.preset("small")
+    assert {"UTolerance", "writeStar"} <= {
+        k for k in a if a[k] != b.get(k)}
+    assert pairs.shortcut(a, b) == pairs.CHECKS["phaseLength"]["entries"]
