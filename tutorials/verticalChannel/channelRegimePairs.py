@@ -26,17 +26,9 @@ not change it); beyond it the quantity depends on the shortcut. Per
 pair, the near-wall over centre concentration at the start of
 agglomeration of both runs (no sigma: the two values)."""
 
-import channel
 import channelRegimeTrend as trend
 from aggloTools import uncertainty
-from channelRegimeVariants import VARIANTS
-
-#: Entries in which two presets may differ without being another
-#: shortcut: the step in seconds (dtStar's), the write interval, and the
-#: velocity solver's tolerance (1e-6 or 1e-8 give the same flow within
-#: what a regression over 100 T* resolves: bench/channelSolverSettings.py,
-#: README)
-NOT_A_SHORTCUT = {"deltaT", "writeStar", "UTolerance"}
+from channelRegimeVariants import presets, shortcut
 
 #: The checks: the preset entries each changes alone (its pairs are the
 #: variants whose presets differ in those alone and are `alike` otherwise,
@@ -107,20 +99,13 @@ def _near_wall(result):
     return (result.get("concentration") or {}).get("nearWallOverCentre")
 
 
-def shortcut(a, b):
-    """The entries in which presets a and b differ (settings dicts of
-    channel.preset), but NOT_A_SHORTCUT."""
-    keys = (set(a) | set(b)) - NOT_A_SHORTCUT - {"name"}
-    return {k for k in keys if a.get(k) != b.get(k)}
-
-
 def check_pairs(check, names=None):
     """The pairs (variant, base) of the check among the presets names
-    (default: the study's VARIANTS; in their order): those whose presets
-    differ in the check's entries alone."""
+    (default: the study's variants; in their order): those whose presets
+    differ in the check's entries alone (channelRegimeVariants.shortcut)."""
     c = CHECKS[check]
-    names = names or [n for n, _ in VARIANTS]
-    p = {n: channel.preset(n) for n in names}
+    p = presets(names)
+    names = list(p)
     alike = c.get("alike", lambda a, b: True)
     return [(v, b) for v in names for b in names
             if v != b and shortcut(p[v], p[b]) == c["entries"]

@@ -20,9 +20,27 @@ extrapolation says so."""
 import numpy as np
 
 from aggloTools import uncertainty
+from channelRegimeVariants import presets, shortcut
+
+#: What a grid variant changes from the coarsest (regime32, the paper's
+#: phases): the cells in every direction, their wall grading and the step
+GRID_ENTRIES = {"n", "yGrading", "dtStar"}
+
+
+def grid_variants(base="regime32"):
+    """The grid variants at the paper's phases and their cells per
+    direction: base and every variant of the study whose preset differs
+    from base's in GRID_ENTRIES alone with the same cells in every
+    direction (channelRegimeVariants), by cells."""
+    p = presets()
+    out = [(name, s["n"][0]) for name, s in p.items()
+           if len(set(s["n"])) == 1
+           and (name == base or shortcut(s, p[base]) == GRID_ENTRIES)]
+    return tuple(sorted(out, key=lambda v: v[1]))
+
 
 #: The grid variants at the paper's phases and their cells per direction
-GRID_VARIANTS = (("regime32", 32), ("regime48", 48), ("regime64", 64))
+GRID_VARIANTS = grid_variants()
 #: The paper's grid (cells per direction)
 N_PAPER_GRID = 128
 #: Below this probability of its chi^2 the power law is rejected

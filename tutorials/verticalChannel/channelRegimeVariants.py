@@ -1,7 +1,10 @@
 """verticalChannel regime study: its variants, in order (a preset each),
-with what each changes from `small`; channelRegime runs and posts them,
-channelRegimePairs derives from their presets which pairs are one
-shortcut apart."""
+with what each changes from `small`, and the entries in which two of them
+differ (shortcut); channelRegime runs and posts them, channelRegimePairs
+and channelRegimeTrend derive from their presets which pairs are one
+shortcut apart and which variants refine the grid alone."""
+
+import channel
 
 
 #: The variants, in order: name (= preset), what it changes from `small`
@@ -16,3 +19,23 @@ VARIANTS = (
     ("printed", "regime64 at the wall-normal grid the paper prints "
                 "(64 x 128 x 64, y+ 0.63, dt* 0.005)"),
 )
+
+#: Entries in which two presets may differ without being another
+#: shortcut: the step in seconds (dtStar's), the write interval, and the
+#: velocity solver's tolerance (1e-6 or 1e-8 give the same flow within
+#: what a regression over 100 T* resolves: bench/channelSolverSettings.py,
+#: README)
+NOT_A_SHORTCUT = {"deltaT", "writeStar", "UTolerance"}
+
+
+def shortcut(a, b):
+    """The entries in which presets a and b differ (settings dicts of
+    channel.preset), but NOT_A_SHORTCUT."""
+    keys = (set(a) | set(b)) - NOT_A_SHORTCUT - {"name"}
+    return {k for k in keys if a.get(k) != b.get(k)}
+
+
+def presets(names=None):
+    """The settings of the presets names (default: every variant's)."""
+    return {n: channel.preset(n)
+            for n in names or [n for n, _ in VARIANTS]}

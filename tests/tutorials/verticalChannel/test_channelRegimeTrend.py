@@ -151,3 +151,15 @@ def test_finest_pair_is_the_law_through_the_two_finest_grids(trend):
                            "regime64; their local slope)")
     assert trend.finest_pair({"variants": res["variants"][1:]},
                              ("EAM",), paper) is None
+
+
+def test_grid_variants_derived_from_the_presets():
+    """The trend's variants come from the presets: those that change only
+    the cells (the same in every direction), their grading and the step
+    from regime32: 32, 48, 64; not regime64short (other phases), not
+    printed (the cells across only), not the 3e5-particle variants."""
+    trend = script("channelRegimeTrend")
+    assert trend.GRID_VARIANTS == (("regime32", 32), ("regime48", 48),
+                                   ("regime64", 64))
+    assert trend.grid_variants("regime32n3") == (("regime32n3", 32),
+                                                 ("regime48n3", 48))
