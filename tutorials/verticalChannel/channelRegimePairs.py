@@ -32,8 +32,9 @@ from channelRegimeVariants import presets, shortcut
 
 #: The checks: the preset entries each changes alone (its pairs are the
 #: variants whose presets differ in those alone and are `alike` otherwise,
-#: the variant the one with the larger `order` value), the heading of their lines in regime.txt and
-#: the words for a ratio beyond Z_CONSISTENT
+#: the variant the one with the larger `order` value), the heading of
+#: their lines in regime.txt and the words for a ratio beyond
+#: Z_CONSISTENT
 CHECKS = {
     "particleNumber": {
         "entries": {"nParticles", "couplingScale"},
