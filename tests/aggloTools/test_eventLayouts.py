@@ -89,6 +89,7 @@ def breakup_sample():
         "omega_a": (40, 50, 60), "d_a": 1.2e-5, "rho_a": 2200,
         "x_b": (7e-3, 8e-3, 9e-3), "U_b": (0.7, 0.8, 0.9),
         "omega_b": (70, 80, 90), "d_b": 3.8e-5, "rho_b": 1150,
+        "attempt": 3, "padding": 0,
     }
 
 

@@ -58,7 +58,10 @@ Description
 
     The log holds the agglomerates that broke: a replay tells which of
     them a variant would also break, not which of the others it would
-    break, nor what its fragments would have done afterwards.
+    break, nor what its fragments would have done afterwards. It knows
+    no neighbours: the fragments are placed along the direction of the
+    logged try (doc/breakup.md 3.2); a variant with fewer tries than a
+    logged break-up needed does not reproduce it.
 
 Usage
     breakupReplay [-case DIR] [-cloud NAME] [-json FILE] [-check]
@@ -153,8 +156,14 @@ breakupReplayResult replay
             ++r.mechanismChanged;
             continue;
         }
+        // The try that placed the fragments in the run (the replay knows
+        // no neighbours): beyond a variant's tries it cannot be made
+        if (e.attempt >= kernel->fragmentation().tries())
+        {
+            continue;
+        }
         const agglomerateFragmentation::fragments f =
-            kernel->split(e.parent, v, e.S, k);
+            kernel->split(e.parent, v, e.S, k, e.attempt);
         if (v.values == e.values && same(f.a, e.a) && same(f.b, e.b))
         {
             ++r.reproduced;

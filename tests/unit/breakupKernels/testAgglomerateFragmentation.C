@@ -68,7 +68,8 @@ struct fragmentationCase
 };
 
 const std::string erosion =
-    "mode erosion; direction extensional; gap 1e-3; spin conserveL;";
+    "mode erosion; direction extensional; gap 1e-3; tries 6;"
+    " spin conserveL;";
 
 vector angularMomentum(const hardSphereState& s)
 {
@@ -93,7 +94,7 @@ TEST(AgglomerateFragmentation, V4ConservationOnRandomParents)
             (
                 st,
                 std::string("mode ") + mode + "; direction extensional;"
-                " gap 1e-3; spin conserveL;"
+                " gap 1e-3; tries 6; spin conserveL;"
               + (std::string(mode) == "beta" ? " betaAlpha 0.7;" : "")
             );
             for (label i = 0; i < 1700; ++i)
@@ -152,7 +153,8 @@ TEST(AgglomerateFragmentation, RigidBodyKeepsMomentumNotSpinMomentum)
 {
     fragmentationCase c
     (
-        "VSM", "mode binary; direction extensional; gap 0; spin rigidBody;"
+        "VSM",
+        "mode binary; direction extensional; gap 0; tries 6; spin rigidBody;"
     );
     const hardSphereState p =
         c.parent(100, 2e-6, point(1, 2, 3), vector(0.1, 0, 0),
@@ -202,7 +204,8 @@ TEST(AgglomerateFragmentation, V5ErosionSequenceAndBinaryTree)
     // binary: the deterministic halving tree down to primaries
     fragmentationCase b
     (
-        "CSM", "mode binary; direction extensional; gap 0; spin conserveL;"
+        "CSM",
+        "mode binary; direction extensional; gap 0; tries 6; spin conserveL;"
     );
     std::vector<label> pending({500});
     label leaves = 0, splits = 0;
@@ -232,7 +235,7 @@ TEST(AgglomerateFragmentation, V5BetaModeFollowsItsLaw)
     (
         "CSM",
         "mode beta; betaAlpha 0.5; direction extensional; gap 0;"
-        " spin conserveL;"
+        " tries 6; spin conserveL;"
     );
     const label N = 20, n = 20000;
     scalar total = 0;
@@ -272,7 +275,8 @@ TEST(AgglomerateFragmentation, V2DirectionInSimpleShear)
     fragmentationCase d
     (
         "CSM",
-        "mode erosion; direction deformationPlane; gap 1e-3; spin conserveL;"
+        "mode erosion; direction deformationPlane; gap 1e-3; tries 6;"
+        " spin conserveL;"
     );
     const vector diag(1/std::sqrt(2.0), 1/std::sqrt(2.0), 0);
     label plus = 0;
@@ -304,6 +308,41 @@ TEST(AgglomerateFragmentation, V2DirectionInSimpleShear)
 }
 
 
+TEST(AgglomerateFragmentation, RetriesTheOppositeThenInTheDeformationPlane)
+{
+    // Shear and stretching: the deformation plane is spanned by the most
+    // extensional and the most compressive eigenvectors, normal to the
+    // intermediate one
+    const symmTensor S(3, 1, 0.5, -1, 0.2, -2);
+    const vector middle(eigenVectors(S).y());
+    fragmentationCase c("CSM", erosion);
+    const vector w(0.3, -0.2, 0.9);
+    const label tries = c.frag.tries();
+    EXPECT_EQ(tries, 6);
+    for (label i = 0; i < 50; ++i)
+    {
+        keyedRandom rnd(3, 4, 0, i, 0);
+        const vector e0 = c.frag.direction(S, vector::zero, false, rnd);
+        EXPECT_EQ(c.frag.retryDirection(e0, S, w, false, 0, rnd), e0);
+        EXPECT_EQ(c.frag.retryDirection(e0, S, w, false, 1, rnd), -e0);
+        for (label t = 2; t < tries; ++t)
+        {
+            keyedRandom rt(3, 4, 0, i, 0, t);
+            const vector e = c.frag.retryDirection(e0, S, w, false, t, rt);
+            EXPECT_TRUE(near(mag(e), 1, 1e-12));
+            EXPECT_LE(mag(e & middle), 1e-12);
+            EXPECT_GT(mag(e - e0), 1e-6);
+            EXPECT_GT(mag(e + e0), 1e-6);
+            // by rotation: perpendicular to the spin
+            keyedRandom rr(3, 4, 0, i, 0, t);
+            const vector er = c.frag.retryDirection(e0, S, w, true, t, rr);
+            EXPECT_LE(mag(er & w), 1e-12*mag(w));
+            EXPECT_TRUE(near(mag(er), 1, 1e-12));
+        }
+    }
+}
+
+
 TEST(AgglomerateFragmentation, BadInputIsFatal)
 {
     const hardSphereMaterial m(makeDict(quartz));
@@ -318,14 +357,21 @@ TEST(AgglomerateFragmentation, BadInputIsFatal)
             [&]{ agglomerateFragmentation(makeDict(text), s(), 2200); }
         );
     };
-    EXPECT_NE(msg("mode erode; direction extensional; gap 0; spin conserveL;")
-        .find("erosion"), std::string::npos);
-    EXPECT_NE(msg("mode beta; direction extensional; gap 0; spin conserveL;")
-        .find("betaAlpha"), std::string::npos);
+    EXPECT_NE(msg("mode erode; direction extensional; gap 0; tries 6;"
+        " spin conserveL;").find("erosion"), std::string::npos);
+    EXPECT_NE(msg("mode beta; direction extensional; gap 0; tries 6;"
+        " spin conserveL;").find("betaAlpha"), std::string::npos);
+    // The tries: required, 1-20
+    for (const char* tries : {"", " tries 0;", " tries 21;"})
+    {
+        EXPECT_NE(msg(std::string("mode erosion; direction extensional;"
+            " gap 0; spin conserveL;") + tries).find("tries"),
+            std::string::npos) << tries;
+    }
     EXPECT_NE(msg(erosion + " betaAlpha 0.5;").find("Unknown entry"),
         std::string::npos);
     EXPECT_NE(msg("mode erosion; direction extensional; gap 2;"
-        " spin conserveL;").find("gap"), std::string::npos);
+        " tries 6; spin conserveL;").find("gap"), std::string::npos);
 }
 
 

@@ -55,6 +55,7 @@ breakupEvent layoutSample()
         point(7e-3, 8e-3, 9e-3), vector(0.7, 0.8, 0.9),
         vector(70, 80, 90), 3.8e-5, 1150, 8
     );
+    e.attempt = 3;
     return e;
 }
 
@@ -89,6 +90,7 @@ TEST(BreakupEventFile, WrittenForPython)
     EXPECT_EQ(read[0].newId, 7);
     EXPECT_EQ(read[0].S, one[0].S);
     EXPECT_EQ(read[0].b.x, one[0].b.x);
+    EXPECT_EQ(read[0].attempt, 3);
     if (!dir)
     {
         std::remove(f.c_str());

@@ -31,7 +31,8 @@ SOL = "cellValueSourceCorrection off;"
 BRK = ("strength { rumpfPrefactor 1.125; coordination exactSmallRumpf; }"
        " stresses { mechanisms (rotation); rotationFactor 0.0625; }"
        " fragmentation { mode erosion; }")
-FRAG = "mode erosion; direction extensional; gap 1e-3; spin conserveL;"
+FRAG = ("mode erosion; direction extensional; gap 1e-3; tries 6;"
+        " spin conserveL;")
 # name: (old text, new text, word the message must name)
 CASES = {
     # misspelt optional entries of hardSphereCoeffs (were silently ignored)

@@ -48,6 +48,7 @@ Foam::dictionary Foam::sizeLimit::fragmentationDict(const dictionary& coeffs)
     d.add("direction", word("extensional"));
     d.add("gap", coeffs.get<scalar>("gap"));
     d.add("spin", word("conserveL"));
+    d.add("tries", 1);
     d.name() = coeffs.name();
     return d;
 }
@@ -117,7 +118,8 @@ Foam::agglomerateFragmentation::fragments Foam::sizeLimit::split
     const hardSphereState& parent,
     const verdict&,
     const symmTensor&,
-    const key& k
+    const key& k,
+    const label
 ) const
 {
     const scalar angle =

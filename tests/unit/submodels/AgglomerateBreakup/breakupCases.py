@@ -22,7 +22,7 @@ BREAKUP = ("breakupModel stressThreshold;\n    stressThresholdCoeffs {"
            " stresses { mechanisms (rotation);"
            " rotationFactor 0.0625; }"
            f" fragmentation {{ mode erosion; direction extensional;"
-           f" gap {GAP}; spin conserveL; }} }}")
+           f" gap {GAP}; tries 6; spin conserveL; }} }}")
 
 
 def kernel(hamaker=None, structure="CSM"):

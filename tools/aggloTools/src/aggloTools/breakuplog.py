@@ -33,7 +33,9 @@ N_VALUES = 4
 
 #: One record (breakupEvent.H), little-endian; the states are the
 #: parent's (_p) and the fragments' (_a: the new parcel, _b: the parent's
-#: parcel); "values" holds the model's values, named by the header
+#: parcel); "values" holds the model's values, named by the header;
+#: "attempt" the try of the direction that placed the fragments (0: the
+#: model's first; doc/breakup.md 3.2)
 DTYPE = np.dtype(
     [("timeIndex", "<i4"), ("mechanism", "<i4"), ("proc", "<i4"),
      ("id", "<i4"), ("newProc", "<i4"), ("newId", "<i4"),
@@ -43,7 +45,8 @@ DTYPE = np.dtype(
     + [("epsilon", "<f8"), ("nu", "<f8"), ("rhoF", "<f8"),
        ("dragForce", "<f8", 3), ("wallImpactSpeed", "<f8"),
        ("S", "<f8", 6), ("values", "<f8", N_VALUES)]
-    + _state("a") + _state("b"))
+    + _state("a") + _state("b")
+    + [("attempt", "<i4"), ("padding", "<i4")])
 
 #: The header's keys, in their order
 KEYS = ("mechanisms", "model", "fields")
@@ -78,7 +81,7 @@ def read_header(path):
     of its lists (mechanisms, model, fields; ValueError if it is not a
     log of this layout)."""
     head = Path(path).read_bytes()[:HEADER_BYTES].decode(errors="replace")
-    layout = (f"aggloBreakupEvents 2 recordBytes {DTYPE.itemsize} arch LSB;"
+    layout = (f"aggloBreakupEvents 3 recordBytes {DTYPE.itemsize} arch LSB;"
               "label=32;scalar=64 ")
     words = head[len(layout):].split()
     if not head.startswith(layout) or tuple(words[0::2]) != KEYS \

@@ -58,6 +58,8 @@ Foam::scalar lnBeta(const Foam::scalar a, const Foam::scalar b)
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
+const Foam::label Foam::agglomerateFragmentation::maxTries;
+
 const Foam::Enum<Foam::agglomerateFragmentation::modeType>
 Foam::agglomerateFragmentation::modeTypeNames
 ({
@@ -103,9 +105,18 @@ Foam::agglomerateFragmentation::agglomerateFragmentation
             hardSphereInput::closed(1)
         )
     ),
-    spin_(spinTypeNames.get("spin", dict))
+    spin_(spinTypeNames.get("spin", dict)),
+    tries_(dict.get<label>("tries"))
 {
-    wordList valid({"mode", "direction", "gap", "spin"});
+    if (tries_ < 1 || tries_ > maxTries)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'tries' " << tries_ << " in " << dict.name()
+            << " is out of range: valid 1-" << maxTries << " (the"
+            << " directions tried against overlaps with neighbours,"
+            << " doc/breakup.md 3.2)" << exit(FatalIOError);
+    }
+    wordList valid({"mode", "direction", "gap", "spin", "tries"});
     if (mode_ == modeType::BETA)
     {
         valid.append("betaAlpha");
@@ -177,36 +188,27 @@ Foam::label Foam::agglomerateFragmentation::fragmentSize
 }
 
 
-Foam::vector Foam::agglomerateFragmentation::direction
+Foam::vector Foam::agglomerateFragmentation::inPlane
 (
     const symmTensor& S,
+    keyedRandom& rnd
+)
+{
+    // Rows of the eigenvectors in the order of ascending eigenvalues
+    const tensor V(eigenVectors(S));
+    const scalar phi = constant::mathematical::twoPi*rnd.sample01();
+    return std::cos(phi)*V.z() + std::sin(phi)*V.x();
+}
+
+
+Foam::vector Foam::agglomerateFragmentation::unitDirection
+(
+    vector e,
     const vector& omega,
     const bool byRotation,
     keyedRandom& rnd
-) const
+)
 {
-    vector e(Zero);
-    if (mag(S) > VSMALL)
-    {
-        // Rows of the eigenvectors in the order of ascending eigenvalues
-        const tensor V(eigenVectors(S));
-        const vector extensional(V.z());
-        if (direction_ == directionType::DEFORMATION_PLANE)
-        {
-            const scalar phi =
-                constant::mathematical::twoPi*rnd.sample01();
-            e = std::cos(phi)*extensional + std::sin(phi)*V.x();
-        }
-        else
-        {
-            e = (rnd.sample01() < 0.5 ? -1 : 1)*extensional;
-        }
-    }
-    else
-    {
-        e = randomUnit(rnd);
-    }
-
     if (byRotation && mag(omega) > VSMALL)
     {
         const vector w(omega/mag(omega));
@@ -218,6 +220,70 @@ Foam::vector Foam::agglomerateFragmentation::direction
         }
     }
     return e/mag(e);
+}
+
+
+Foam::vector Foam::agglomerateFragmentation::direction
+(
+    const symmTensor& S,
+    const vector& omega,
+    const bool byRotation,
+    keyedRandom& rnd
+) const
+{
+    vector e(Zero);
+    if (mag(S) > VSMALL)
+    {
+        if (direction_ == directionType::DEFORMATION_PLANE)
+        {
+            e = inPlane(S, rnd);
+        }
+        else
+        {
+            // The most extensional eigenvector, its sign at random
+            e = (rnd.sample01() < 0.5 ? -1 : 1)*eigenVectors(S).z();
+        }
+    }
+    else
+    {
+        e = randomUnit(rnd);
+    }
+    return unitDirection(e, omega, byRotation, rnd);
+}
+
+
+Foam::vector Foam::agglomerateFragmentation::retryDirection
+(
+    const vector& e0,
+    const symmTensor& S,
+    const vector& omega,
+    const bool byRotation,
+    const label attempt,
+    keyedRandom& rnd
+) const
+{
+    if (attempt < 0 || attempt >= tries_)
+    {
+        FatalErrorInFunction
+            << "Placement try " << attempt << " of " << tries_
+            << abort(FatalError);
+    }
+    if (attempt == 0)
+    {
+        return e0;
+    }
+    if (attempt == 1)
+    {
+        return -e0;
+    }
+
+    // The further tries: at random in the deformation plane
+    // (doc/breakup.md 3.2), at random where the strain rate vanishes
+    return unitDirection
+    (
+        mag(S) > VSMALL ? inPlane(S, rnd) : randomUnit(rnd),
+        omega, byRotation, rnd
+    );
 }
 
 
@@ -292,7 +358,8 @@ void Foam::agglomerateFragmentation::write(Ostream& os) const
         os  << " (betaAlpha " << betaAlpha_ << ")";
     }
     os  << ", direction " << directionTypeNames[direction_] << ", gap "
-        << gap_ << ", spin " << spinTypeNames[spin_];
+        << gap_ << ", spin " << spinTypeNames[spin_] << ", tries "
+        << tries_;
 }
 
 

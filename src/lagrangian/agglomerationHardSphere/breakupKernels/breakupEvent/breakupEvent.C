@@ -27,6 +27,7 @@ License
 
 #include "breakupEvent.H"
 #include "eventRecord.H"
+#include "agglomerateFragmentation.H"
 #include "SHA1.H"
 #include <cmath>
 #include <cstdlib>
@@ -56,8 +57,9 @@ namespace
         return std::isfinite(v) && v >= lo && v <= hi;
     }
 
-    // The offset of the record's checksum
+    // The offsets of the record's checksum and padding
     const std::size_t checkAt = 36;
+    const std::size_t paddingAt = 452;
 
 }
 
@@ -85,7 +87,8 @@ Foam::breakupEvent::breakupEvent()
     S(Zero),
     values(scalar(0)),
     a(),
-    b()
+    b(),
+    attempt(0)
 {}
 
 
@@ -121,6 +124,8 @@ void Foam::breakupEvent::pack(char* buf) const
     }
     putState(buf, pos, a);
     putState(buf, pos, b);
+    put<int32_t>(buf, pos, attempt);
+    put<int32_t>(buf, pos, 0);          // padding
 
     std::size_t at = checkAt;
     put<uint32_t>(buf, at, checksum(buf));
@@ -167,6 +172,7 @@ void Foam::breakupEvent::unpack(const char* buf)
     }
     getState(buf, pos, a);
     getState(buf, pos, b);
+    attempt = get<int32_t>(buf, pos);
 }
 
 
@@ -181,6 +187,8 @@ std::string Foam::breakupEvent::invalid
     std::ostringstream os;
     std::size_t at = checkAt;
     const uint32_t check = eventRecord::get<uint32_t>(buf, at);
+    at = paddingAt;
+    const int32_t padding = eventRecord::get<int32_t>(buf, at);
     bool boundedValues = true;
     forAll(values, i)
     {
@@ -256,6 +264,19 @@ std::string Foam::breakupEvent::invalid
         }
         os << ") (valid: the " << nFields << " named by the header's fields"
            << " within +-" << valueMax << ", the others 0)";
+    }
+    else if
+    (
+        attempt < 0 || attempt >= agglomerateFragmentation::maxTries
+    )
+    {
+        os << "placement try " << attempt << " (valid: 0-"
+           << agglomerateFragmentation::maxTries - 1 << ")";
+    }
+    else if (padding != 0)
+    {
+        os << "padding " << padding << " at byte " << paddingAt
+           << " (valid: 0)";
     }
     for (const hardSphereState* p : {&parent, &a, &b})
     {

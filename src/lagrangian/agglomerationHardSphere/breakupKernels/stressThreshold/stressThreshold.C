@@ -155,7 +155,8 @@ Foam::agglomerateFragmentation::fragments Foam::stressThreshold::split
     const hardSphereState& parent,
     const verdict& v,
     const symmTensor& S,
-    const key& k
+    const key& k,
+    const label attempt
 ) const
 {
     keyedRandom rnd
@@ -164,11 +165,21 @@ Foam::agglomerateFragmentation::fragments Foam::stressThreshold::split
         k.timeIndex, 0
     );
     const label N1 = fragmentation_.fragmentSize(parent.nPrimary, rnd);
-    const vector e =
-        fragmentation_.direction
+    const bool byRotation = v.mechanism == breakupStresses::ROTATION;
+    vector e = fragmentation_.direction(S, parent.omega, byRotation, rnd);
+    if (attempt)
+    {
+        // A further try's own draws (the first try's are keyed by 0)
+        keyedRandom rndTry
         (
-            S, parent.omega, v.mechanism == breakupStresses::ROTATION, rnd
+            randomSeed_, randomStreams::breakup, k.origProc, k.origId,
+            k.timeIndex, attempt
         );
+        e = fragmentation_.retryDirection
+        (
+            e, S, parent.omega, byRotation, attempt, rndTry
+        );
+    }
     return fragmentation_.split(parent, N1, e);
 }
 

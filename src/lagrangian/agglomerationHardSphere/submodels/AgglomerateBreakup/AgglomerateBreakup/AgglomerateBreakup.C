@@ -54,17 +54,32 @@ Foam::AgglomerateBreakup<CloudType>::collisionOf
 
 
 template<class CloudType>
-Foam::scalar Foam::AgglomerateBreakup<CloudType>::split
+Foam::agglomerateFragmentation::fragments
+Foam::AgglomerateBreakup<CloudType>::splitOf
 (
-    parcelType& p,
-    breakupEvent& e
-)
+    const breakupEvent& e,
+    const label attempt
+) const
 {
     breakupKernel::verdict v;
     v.mechanism = e.mechanism;
     v.values = e.values;
-    const agglomerateFragmentation::fragments f =
-        kernel_->split(e.parent, v, e.S, {e.proc, e.id, e.timeIndex});
+    return
+        kernel_->split
+        (
+            e.parent, v, e.S, {e.proc, e.id, e.timeIndex}, attempt
+        );
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::AgglomerateBreakup<CloudType>::split
+(
+    parcelType& p,
+    breakupEvent& e,
+    const agglomerateFragmentation::fragments& f
+)
+{
     e.a = f.a;
     e.b = f.b;
 
@@ -115,13 +130,14 @@ Foam::AgglomerateBreakup<CloudType>::AgglomerateBreakup
 {
     // The model's columns of the statistics: one per mechanism
     const wordList& mechanisms = kernel_->mechanisms();
-    wordList counters(mechanisms.size());
-    forAll(counters, m)
+    wordList counters(mechanisms.size() + 1);
+    forAll(mechanisms, m)
     {
         word name(mechanisms[m]);
         name[0] = toupper(name[0]);
         counters[m] = "nBreakup" + name;
     }
+    counters.last() = "nBreakupNoRoom";
     columns_ =
         owner.template lookupObjectRef<hardSphereStep>
         (
@@ -175,15 +191,18 @@ void Foam::AgglomerateBreakup<CloudType>::report
     {
         step.counts[columns_.first() + m] += nEvents[m];
     }
+    step.counts[columns_.first() + nEvents.size()] += s.nNoRoom;
     step.sums[columns_.second()] += dKE;
 
     label nDeferred = s.nDeferred;
+    label nNoRoom = s.nNoRoom;
     label nChecked = s.nChecked;
     scalar largest = s.largest;
     Pstream::listCombineGather(nEvents, plusEqOp<label>());
     Pstream::listCombineScatter(nEvents);
     reduce(dKE, sumOp<scalar>());
     reduce(nDeferred, sumOp<label>());
+    reduce(nNoRoom, sumOp<label>());
     reduce(nChecked, sumOp<label>());
     reduce(largest, maxOp<scalar>());
 
@@ -198,6 +217,7 @@ void Foam::AgglomerateBreakup<CloudType>::report
     {
         Info<< ", deferred by the rate " << nDeferred;
     }
+    Info<< ", waiting for room " << nNoRoom;
     // How near the agglomerates that hold came to breaking: the largest
     // first value the model declares (stressThreshold: the ratio of the
     // load to the strength)
@@ -226,6 +246,9 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
         check(td, s);
     }
 
+    // Their fragments among the neighbours (doc/breakup.md 3.2)
+    place(s);
+
     // The new parcels' global ids (collective), the splits, the log
     const labelList newIds(this->ids_.assign(s.ids));
     labelList nEvents(kernel_->mechanisms().size(), Zero);
@@ -235,7 +258,7 @@ void Foam::AgglomerateBreakup<CloudType>::breakup(trackingData& td)
         breakupEvent& e = s.events[i];
         e.newProc = fragmentIds::origProc;
         e.newId = newIds[i];
-        dKE += split(*s.parents[i], e);
+        dKE += split(*s.parents[i], e, s.fragments[i]);
         ++nEvents[e.mechanism];
         if (log_.valid())
         {
