@@ -21,15 +21,26 @@ class Criterion:
     """The criterion for primaries of diameter dp [m], density rho_p,
     Hamaker constant H [J] and contact distance delta0 [m] in a fluid of
     kinematic viscosity nu and density rho_f; coefficients as in the
-    stresses dictionary (Cv, Ci, rotationFactor) and the Rumpf prefactor
-    c_R (coordination exactSmallRumpf)."""
+    stresses dictionary (dissipation, Cv, Ci, rotationFactor) and the
+    Rumpf prefactor c_R (coordination exactSmallRumpf). The reading of
+    the dissipation rate (doc/breakup.md 1.1) in laminar shear, where
+    all of it is resolved (eps_res = nu gamma^2, eps_sgs = 0): total
+    puts eps_res into the subrange forms, subgrid has no turbulent
+    stress, resolvedShear the viscous C_v mu gamma at any size."""
+
+    READINGS = ("total", "subgrid", "resolvedShear")
 
     def __init__(self, dp, rho_p, H, delta0, nu, rho_f, c_r=1.125,
-                 Cv=1.0, Ci=1.0, rotation_factor=1 / 16):
+                 Cv=1.0, Ci=1.0, rotation_factor=1 / 16,
+                 reading="total"):
+        if reading not in self.READINGS:
+            raise ValueError(f"reading {reading!r}: one of "
+                             f"{', '.join(self.READINGS)}")
         self.dp, self.rho_p, self.H, self.delta0 = dp, rho_p, H, delta0
         self.nu, self.rho_f = nu, rho_f
         self.c_r, self.Cv, self.Ci = c_r, Cv, Ci
         self.rot = rotation_factor
+        self.reading = reading
 
     @staticmethod
     def packing(n):
@@ -61,14 +72,17 @@ class Criterion:
     def stresses(self, n, gamma):
         """(turbulent, rotational) stress of an agglomerate at rest in
         the simple shear gamma [1/s], spinning at gamma/2: eps = nu
-        gamma^2; viscous C_v mu (eps/nu)^(1/2) for d_a <= eta, inertial
-        C_i rho_f (eps d_a)^(2/3) above; rotation c_r rho_a omega^2 d_a^2.
-        No slip: no drag stress."""
+        gamma^2, by the reading; viscous C_v mu (eps/nu)^(1/2) for d_a <=
+        eta, inertial C_i rho_f (eps d_a)^(2/3) above; rotation c_r rho_a
+        omega^2 d_a^2. No slip: no drag stress."""
         eps = self.nu * gamma ** 2
         eta = (self.nu ** 3 / eps) ** 0.25
         da = self.diameter(n)
-        if da <= eta:
-            turb = self.Cv * self.nu * self.rho_f * math.sqrt(eps / self.nu)
+        viscous = self.Cv * self.nu * self.rho_f * math.sqrt(eps / self.nu)
+        if self.reading == "subgrid":
+            turb = 0.0
+        elif self.reading == "resolvedShear" or da <= eta:
+            turb = viscous
         else:
             turb = self.Ci * self.rho_f * (eps * da) ** (2 / 3)
         rot = self.rot * self.density(n) * (gamma / 2) ** 2 * da ** 2

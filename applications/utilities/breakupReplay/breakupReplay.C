@@ -139,7 +139,7 @@ breakupReplayResult replay
     {
         const breakupKernel::key k{e.proc, e.id, e.timeIndex};
         const breakupKernel::verdict v =
-            kernel->check(e.parent, e.load, e.dt, k);
+            kernel->check(e.parent, e.replayLoad(), e.dt, k);
         if (v.mechanism < 0)
         {
             continue;
@@ -237,7 +237,8 @@ List<breakupReplayResult> replayConfigurations
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-int main(int argc, char *argv[])
+//- The utility's options
+void addOptions()
 {
     argList::addNote
     (
@@ -258,6 +259,46 @@ int main(int argc, char *argv[])
         "variants", "file", "configurations that change the run's"
         " <model>Coeffs"
     );
+}
+
+
+//- The replays of the run's configuration (its break-up coefficients, the
+//  material and structure of its collision kernel) and of the variants
+List<breakupReplayResult> replays
+(
+    const Time& runTime,
+    const argList& args,
+    const word& cloudName,
+    const word& model,
+    const UList<breakupEvent>& events,
+    const List<wordList>& names
+)
+{
+    const IOdictionary props
+    (
+        IOobject
+        (
+            cloudName + "Properties", runTime.constant(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    const dictionary& subModels = props.subDict("subModels");
+    const hardSphereCollisionKernel collision(runKernelDict(subModels));
+    return
+        replayConfigurations
+        (
+            model, subModels.subDict(model + "Coeffs"), collision, events,
+            names,
+            args.found("variants")
+          ? fileName(args.get<fileName>("variants").expand())
+          : fileName::null
+        );
+}
+
+
+int main(int argc, char *argv[])
+{
+    addOptions();
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -287,28 +328,9 @@ int main(int argc, char *argv[])
     );
     const wordList& mechanisms = names[0];
 
-    // The run's configuration (its break-up coefficients, the material and
-    // structure of its collision kernel) and the variants
-    const IOdictionary props
-    (
-        IOobject
-        (
-            cloudName + "Properties", runTime.constant(), runTime,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        )
-    );
-    const dictionary& subModels = props.subDict("subModels");
-    const hardSphereCollisionKernel collision(runKernelDict(subModels));
     const List<breakupReplayResult> results
     (
-        replayConfigurations
-        (
-            model, subModels.subDict(model + "Coeffs"), collision, events,
-            names,
-            args.found("variants")
-          ? fileName(args.get<fileName>("variants").expand())
-          : fileName::null
-        )
+        replays(runTime, args, cloudName, model, events, names)
     );
 
     // Table and JSON

@@ -105,7 +105,8 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-int main(int argc, char *argv[])
+//- The utility's options
+void addOptions()
 {
     argList::addNote
     (
@@ -140,6 +141,31 @@ int main(int argc, char *argv[])
         " (u_n, tangential speeds, spins) and each configuration's branch,"
         " agglomeration and intermediates"
     );
+}
+
+
+//- Print each configuration's reproduced outcomes; true if every compared
+//  configuration reproduced all
+bool reportMatches(const UList<replayResult>& results)
+{
+    bool ok = true;
+    for (const replayResult& r : results)
+    {
+        if (r.compared)
+        {
+            Info<< nl << r.name << ": " << r.matches << " of " << r.compared
+                << " logged outcomes reproduced (branch, collision type,"
+                << " agglomeration)" << nl;
+            ok = ok && r.matches == r.compared;
+        }
+    }
+    return ok;
+}
+
+
+int main(int argc, char *argv[])
+{
+    addOptions();
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -204,17 +230,7 @@ int main(int argc, char *argv[])
         writeEvents(args.get<fileName>("eventsOut"), events, results);
     }
 
-    bool ok = true;
-    for (const replayResult& r : results)
-    {
-        if (r.compared)
-        {
-            Info<< nl << r.name << ": " << r.matches << " of " << r.compared
-                << " logged outcomes reproduced (branch, collision type,"
-                << " agglomeration)" << nl;
-            ok = ok && r.matches == r.compared;
-        }
-    }
+    const bool ok = reportMatches(results);
     Info<< nl << "JSON: " << jsonOut << nl;
 
     // The exit status through FatalError: a plain return would be

@@ -1,6 +1,6 @@
 """tutorials/breakupShear: the criterion of breakupTheory against the hand
 values of doc/breakup.md 1.7, the gate's verdicts and exit status, and
-the `ci` preset run end to end in a copy of the tutorial (about 15 s)."""
+the `ci` preset run end to end in a copy of the tutorial (about 20 s)."""
 
 import json
 import math
@@ -16,6 +16,7 @@ from runLocks import lock_text
 TUT = project_dir() / "tutorials" / "breakupShear"
 theory = tutorial_module("breakupShear", "breakupTheory")
 driver = tutorial_module("breakupShear", "breakupShear")
+report = tutorial_module("breakupShear", "breakupShearReport")
 
 
 def test_criterion_matches_the_spec_example():
@@ -38,7 +39,7 @@ def test_final_size_is_the_largest_stable_size_below_n0():
     """Erosion stops at the first stable size going down from N0; a stable
     N0 stays; above the critical shear of a doublet nothing below it
     holds two primaries unless a larger size is stable."""
-    c = driver.criterion()
+    c = report.criterion(driver.READING)
     for g in (3e5, 4e5, 5e5, 6e5):
         n = c.final_size(200, g)
         assert c.stable(n, g)
@@ -48,15 +49,48 @@ def test_final_size_is_the_largest_stable_size_below_n0():
     assert c.stable(2, 0.999 * g2) and not c.stable(2, 1.001 * g2)
 
 
+def test_readings_in_laminar_shear():
+    """doc/breakup.md 1.1 in laminar shear (eps = nu gamma^2, all of it
+    resolved): total puts it into the inertial form where d_a > eta,
+    subgrid leaves no turbulent stress, resolvedShear the viscous
+    C_v mu gamma at any size; rotation is the same in all three."""
+    g = 5e5
+    c = {r: report.criterion(r) for r in theory.Criterion.READINGS}
+    da = c["total"].diameter(2)
+    eta = math.sqrt(report.NU / g)
+    assert da > eta
+    mu = report.NU * report.RHO_F
+    assert c["total"].stresses(2, g)[0] == pytest.approx(
+        report.RHO_F * (report.NU * g ** 2 * da) ** (2 / 3), rel=1e-12)
+    assert c["subgrid"].stresses(2, g)[0] == 0
+    assert c["resolvedShear"].stresses(2, g)[0] == pytest.approx(
+        mu * g, rel=1e-12)
+    rot = {r: c[r].stresses(2, g)[1] for r in c}
+    assert len(set(rot.values())) == 1
+    with pytest.raises(ValueError, match="resolvedShear"):
+        report.criterion("resolved")
+
+
+def row(**kw):
+    r = dict(primaries=320, primaries0=320, unjustified=0,
+             stillEroding=False, nMax=14, nPredicted=14)
+    r.update(kw)
+    return r
+
+
 def test_gate_verdicts():
-    """FAIL: primaries lost, or erosion stopped above the prediction; n/r
-    while still eroding; PASS otherwise."""
-    assert driver.judge(14, 14, 320, 320, False) == "PASS"
-    assert driver.judge(9, 14, 320, 320, False) == "PASS"
-    assert driver.judge(15, 14, 320, 320, False) == "FAIL"
-    assert driver.judge(14, 14, 319, 320, False) == "FAIL"
-    assert driver.judge(20, 14, 320, 320, True).startswith("n/r")
-    assert driver.judge(20, 14, 319, 320, True) == "FAIL"
+    """Two-sided. FAIL: primaries lost, a break-up the criterion does not
+    allow (too much) or the largest above the prediction once erosion
+    stopped (too little); n/r while still eroding; PASS otherwise (the
+    collisions may erode below the prediction)."""
+    assert report.judge(row()) == "PASS"
+    assert report.judge(row(nMax=9)) == "PASS"
+    assert report.judge(row(nMax=15)) == "FAIL"
+    assert report.judge(row(primaries=319)) == "FAIL"
+    assert report.judge(row(unjustified=1)) == "FAIL"
+    assert report.judge(row(nMax=20, stillEroding=True)).startswith("n/r")
+    assert report.judge(row(primaries=319, stillEroding=True)) == "FAIL"
+    assert report.judge(row(unjustified=2, stillEroding=True)) == "FAIL"
 
 
 def test_ci_preset_end_to_end(tmp_path, foam_env):
@@ -88,7 +122,7 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
 
     # A write cut off by a kill: the run continues from the write before
     # it, to the same end (before, every later call ended in a traceback)
-    case = tut / "runs/ci/shear-gamma5e+05"
+    case = tut / "runs/ci/shear-resolvedShear-gamma5e+05"
     last = times.time_dirs(case)[-1]
     (last / "U").write_bytes((last / "U").read_bytes()[:200])
     log = case / "log.aggloPimpleFoam"
@@ -132,6 +166,22 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
     assert res.returncode == 1, res.stdout[-3000:]
     assert "FAIL" in res.stdout
 
+    # The other side: with bonds ten times stronger in the theory every
+    # logged break-up is one the criterion does not allow
+    theory_file = tut / "breakupTheory.py"
+    text = theory_file.read_text()
+    theory_file.write_text(text.replace(
+        "        F = self.bond_force()\n",
+        "        F = 10 * self.bond_force()\n"))
+    assert theory_file.read_text() != text
+    res = subprocess.run(["./Allrun", "-preset", "ci", "-post"], cwd=tut,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=600)
+    assert res.returncode == 1, res.stdout[-3000:]
+    rows = json.loads((tut / "runs/ci/report/summary.json").read_text())[
+        "rows"]
+    assert all(r["unjustified"] == r["checkedBreakups"] > 0 for r in rows)
+
 
 def test_driver_help_and_refusals(tmp_path, foam_env):
     """-help prints the options and exits 0; -post before any run and a
@@ -145,7 +195,8 @@ def test_driver_help_and_refusals(tmp_path, foam_env):
     res = subprocess.run(["./Allrun", "-preset", "ci", "-post"], cwd=tut,
                          capture_output=True, text=True)
     assert res.returncode == 1 and "Traceback" not in res.stderr
-    assert "no finished run of shear-gamma5e+05" in res.stderr
+    assert "no finished run of shear-resolvedShear-gamma5e+05" \
+        in res.stderr
     # a solver that cannot start: its controlDict names no application
     theory = tut / "breakupShear.py"
     theory.write_text(theory.read_text().replace(

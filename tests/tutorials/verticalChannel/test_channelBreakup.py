@@ -77,8 +77,9 @@ def test_smoke_C2_with_breakup(tmp_path, foam_env):
     assert "nBreakupTurbulence" not in read_stats(runs / "dispersion",
                                                   "particles")
     log = (agg / "log.aggloPimpleFoam").read_text()
-    lines = re.findall(r"Break-up: 0 events \([^)]*\), (\d+) agglomerates "
-                       r"checked(?:, largest ratio (\S+))?,", log)
+    lines = re.findall(r"Break-up: 0 events \([^)]*\), waiting for room 0,"
+                       r" (\d+) agglomerates checked(?:, largest ratio"
+                       r" (\S+))?,", log)
     steps = int(round(channel.preset("smoke")["agglomeration"] / 0.02))
     assert len(lines) == steps
     # checked in each step: the agglomerates the step's collisions left,

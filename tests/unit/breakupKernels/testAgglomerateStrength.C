@@ -174,7 +174,10 @@ TEST(BreakupStresses, TurbulentStressLimits)
 {
     const breakupStresses s
     (
-        makeDict("mechanisms (turbulence); Cv 2.5; Ci 2.5;")
+        makeDict
+        (
+            "mechanisms (turbulence); dissipation total; Cv 2.5; Ci 2.5;"
+        )
     );
     const scalar nu = 1.5e-5, rhoF = 1.2, mu = nu*rhoF;
 
@@ -196,6 +199,53 @@ TEST(BreakupStresses, TurbulentStressLimits)
 
     // still fluid: no stress
     EXPECT_EQ(s.turbulent(0, nu, rhoF, eta), 0);
+}
+
+
+TEST(BreakupStresses, DissipationReadingsAgainstHandValues)
+{
+    // Water in simple shear gammaDot = 5e5 1/s (doc/breakup.md 1.1):
+    // eps_res = nu gammaDot^2 = 2.5e5 m2/s3, eta = (nu^3/eps)^1/4 =
+    // 1.41 um; a 30 um agglomerate lies in the inertial range, a 1 um one
+    // in the viscous range
+    const scalar nu = 1e-6, rhoF = 1000, mu = nu*rhoF, g = 5e5;
+    const scalar epsRes = nu*g*g;
+    auto stress = [&](const word& reading, const scalar nut, scalar d)
+    {
+        const breakupStresses s
+        (
+            makeDict
+            (
+                "mechanisms (turbulence); dissipation " + reading
+              + "; Cv 1; Ci 1;"
+            )
+        );
+        breakupStresses::load L{(nu + nut)*g*g, nu, rhoF, vector::zero,
+            vector::zero, 0, epsRes};
+        return s.stresses(L, d, 2500)[breakupStresses::TURBULENCE];
+    };
+    const scalar d = 30e-6, small = 1e-6;
+    const scalar inertial = rhoF*std::cbrt(sqr(epsRes*d));    // 3831 Pa
+    EXPECT_TRUE(near(inertial, 3831.2, 1e-4));
+
+    // laminar: the resolved shear only
+    EXPECT_TRUE(near(stress("total", 0, d), inertial, 1e-12));
+    EXPECT_EQ(stress("subgrid", 0, d), 0);
+    EXPECT_TRUE(near(stress("resolvedShear", 0, d), mu*g, 1e-12));
+
+    // a Smagorinsky part nu_t = nu: eps = 2 nu gammaDot^2, eps_sgs = eps_res
+    EXPECT_TRUE(near(stress("total", nu, d),
+        rhoF*std::cbrt(sqr(2*epsRes*d)), 1e-12));
+    EXPECT_TRUE(near(stress("subgrid", nu, d), inertial, 1e-12));
+    EXPECT_TRUE(near(stress("resolvedShear", nu, d),
+        std::sqrt(sqr(mu*g) + sqr(inertial)), 1e-12));
+
+    // viscous range: resolvedShear equals total (sqrt(2) mu gammaDot)
+    EXPECT_TRUE(near(stress("total", nu, small), std::sqrt(2.0)*mu*g,
+        1e-12));
+    EXPECT_TRUE(near(stress("resolvedShear", nu, small),
+        std::sqrt(2.0)*mu*g, 1e-12));
+    EXPECT_TRUE(near(stress("subgrid", nu, small), mu*g, 1e-12));
 }
 
 
@@ -233,7 +283,7 @@ TEST(BreakupStresses, StokesDragAndCriticalSpin)
 
     // the mechanisms off give no stress
     breakupStresses::load L{1e4, 1.5e-5, 1.2, vector(F, 0, 0),
-        vector(0, 0, 1e5), 0};
+        vector(0, 0, 1e5), 0, 1e4};
     const FixedList<scalar, 3> all(s.stresses(L, d, 2500));
     EXPECT_EQ(all[breakupStresses::TURBULENCE], 0);
     EXPECT_GT(all[breakupStresses::DRAG], 0);
@@ -255,6 +305,14 @@ TEST(BreakupStresses, BadInputIsFatal)
     EXPECT_NE(msg("mechanisms (drag); Cd 0;").find("Cd"), std::string::npos);
     EXPECT_NE(msg("mechanisms (rotation);").find("rotationFactor"),
         std::string::npos);
+    // the reading of the dissipation rate: required with turbulence, one
+    // of the three, refused without it
+    EXPECT_NE(msg("mechanisms (turbulence); Cv 1; Ci 1;")
+        .find("dissipation"), std::string::npos);
+    EXPECT_NE(msg("mechanisms (turbulence); dissipation resolved; Cv 1;"
+        " Ci 1;").find("resolvedShear"), std::string::npos);
+    EXPECT_NE(msg("mechanisms (drag); Cd 1; dissipation total;")
+        .find("mechanism that is off"), std::string::npos);
 }
 
 

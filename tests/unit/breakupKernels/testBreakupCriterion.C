@@ -72,7 +72,7 @@ breakupStresses::load shearLoad(const scalar eps)
 {
     return breakupStresses::load
     {
-        eps, nu, rhoF, vector::zero, vector::zero, 0
+        eps, nu, rhoF, vector::zero, vector::zero, 0, eps
     };
 }
 
@@ -81,7 +81,10 @@ breakupStresses::load shearLoad(const scalar eps)
 
 TEST(BreakupCriterion, V2CriticalShearRateAndSmagorinskyShift)
 {
-    criterionCase c("mechanisms (turbulence); Cv 2.5; Ci 2.5;");
+    criterionCase c
+    (
+        "mechanisms (turbulence); dissipation total; Cv 2.5; Ci 2.5;"
+    );
     const hardSphereState s = c.agglomerate(10);
     const scalar sigmaT =
         c.criterion.check(s, shearLoad(0)).sigmaT;
@@ -134,7 +137,11 @@ TEST(BreakupCriterion, V2CriticalShearRateAndSmagorinskyShift)
 
 TEST(BreakupCriterion, V3CriticalSlipOfStokesDrag)
 {
-    criterionCase c("mechanisms (turbulence drag); Cv 1; Ci 1; Cd 1;");
+    criterionCase c
+    (
+        "mechanisms (turbulence drag); dissipation total; Cv 1; Ci 1;"
+        " Cd 1;"
+    );
     const hardSphereState s = c.agglomerate(30);
     const scalar sigmaT = c.criterion.check(s, shearLoad(0)).sigmaT;
 
@@ -145,7 +152,7 @@ TEST(BreakupCriterion, V3CriticalSlipOfStokesDrag)
         const vector F(3*constant::mathematical::pi*mu*s.d*U0, 0, 0);
         const breakupCriterion::verdict v = c.criterion.check
         (
-            s, breakupStresses::load{0, nu, rhoF, F, vector::zero, 0}
+            s, breakupStresses::load{0, nu, rhoF, F, vector::zero, 0, 0}
         );
         EXPECT_EQ(v.breaks(), f > 1) << f;
         EXPECT_EQ(v.mechanism, label(breakupStresses::DRAG));
@@ -157,7 +164,8 @@ TEST(BreakupCriterion, LargestRatioAndPrimaries)
 {
     criterionCase c
     (
-        "mechanisms (turbulence drag rotation); Cv 1; Ci 1; Cd 1;"
+        "mechanisms (turbulence drag rotation); dissipation total;"
+        " Cv 1; Ci 1; Cd 1;"
         " rotationFactor 0.0625;"
     );
     const hardSphereState s = c.agglomerate(4);
@@ -171,7 +179,7 @@ TEST(BreakupCriterion, LargestRatioAndPrimaries)
         breakupStresses::load
         {
             nu*sqr(10.0), nu, rhoF, vector(1e-20, 0, 0),
-            vector(0, 0, 2*wc), 0
+            vector(0, 0, 2*wc), 0, nu*sqr(10.0)
         }
     );
     EXPECT_EQ(v.mechanism, label(breakupStresses::ROTATION));
@@ -182,7 +190,7 @@ TEST(BreakupCriterion, LargestRatioAndPrimaries)
     const breakupCriterion::verdict vp = c.criterion.check
     (
         p, breakupStresses::load{1e9, nu, rhoF, vector(1, 0, 0),
-            vector(0, 0, 1e9), 0}
+            vector(0, 0, 1e9), 0, 1e9}
     );
     EXPECT_FALSE(vp.breaks());
     EXPECT_EQ(vp.mechanism, -1);
@@ -219,7 +227,7 @@ TEST(BreakupCriterion, WallImpactCriticalSpeed)
                 s,
                 breakupStresses::load
                 {
-                    0, nu, rhoF, vector::zero, vector::zero, f*vCrit
+                    0, nu, rhoF, vector::zero, vector::zero, f*vCrit, 0
                 }
             );
             EXPECT_EQ(v.breaks(), f > 1) << N << " " << f;
@@ -231,7 +239,7 @@ TEST(BreakupCriterion, WallImpactCriticalSpeed)
         const breakupCriterion::verdict v0 = c.criterion.check
         (
             s, breakupStresses::load{0, nu, rhoF, vector::zero,
-                vector::zero, 0}
+                vector::zero, 0, 0}
         );
         EXPECT_FALSE(v0.breaks());
     }

@@ -18,14 +18,19 @@ from breakupCases import (BREAKUP, DELTA0, DP, GAMMA_CRIT, H, L_C, N_C, NU_F,
                           tensile_strength)
 
 
+@pytest.mark.parametrize("reading", ["total", "resolvedShear", "subgrid"])
 @pytest.mark.parametrize("n", [2, 10])
 @pytest.mark.parametrize("factor", [0.99, 1.01])
-def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor):
+def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor,
+                                     reading):
     """V2: an agglomerate in laminar simple shear (frozen Couette flow,
     no slip) breaks by the turbulent stress C_v mu (eps/nu)^(1/2) =
     C_v mu gamma (eps = nu gamma^2 in the viscous subrange, d_a < eta)
-    above gamma_crit = sigma_T/(C_v mu) and not below; the fragments lie
-    along the extensional direction, at 45 degrees in the x-y plane."""
+    above gamma_crit = sigma_T/(C_v mu) and not below, by the readings
+    total and resolvedShear of the dissipation rate (doc/breakup.md 1.1);
+    by subgrid (no sub-grid part in laminar flow) not at all. The
+    fragments lie along the extensional direction, at 45 degrees in the
+    x-y plane."""
     # sigma_T is proportional to the Hamaker constant
     h_weak = H * GAMMA_CRIT * NU_F * RHO_F / tensile_strength(n, "CSM")
     gamma = factor * GAMMA_CRIT
@@ -38,7 +43,8 @@ def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor):
                  omega=(0, 0, -gamma / 2))]
     hs = kernel(h_weak)
     brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
-                          "mechanisms (turbulence); Cv 1; Ci 1;")
+                          "mechanisms (turbulence); dissipation"
+                          f" {reading}; Cv 1; Ci 1;")
     assert "turbulence" in brk
     uw = gamma * L_C[1] / 2
     boxcase.box_case(case_dir, L=L_C, n=N_C,
@@ -53,7 +59,7 @@ def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor):
     boxcase.run_case(case_dir)
     t = last_time(case_dir)
     c, x, _ = state(case_dir, t)
-    if factor < 1:
+    if factor < 1 or reading == "subgrid":
         assert len(c["d"]) == 1 and c["nPrimary"][0] == n
         return
     assert sorted(c["nPrimary"]) == [1, n - 1]
@@ -94,7 +100,8 @@ def test_stochastic_rate_breaks_the_expected_share(case_dir, foam_env,
     hs = kernel(h_weak)
     brk = BREAKUP.replace(
         "mechanisms (rotation); rotationFactor 0.0625;",
-        "mechanisms (turbulence); Cv 1; Ci 1;").replace(
+        "mechanisms (turbulence); dissipation total; Cv 1;"
+        " Ci 1;").replace(
         "spin conserveL; }",
         f"spin conserveL; }} rate {{ model stochastic; timeScale {scale}; }}")
     assert "stochastic" in brk and "turbulence" in brk

@@ -51,7 +51,8 @@ def shear_case(case):
     h_weak = H * GAMMA_CRIT * NU_F * RHO_F / tensile_strength(2, "CSM")
     brk = BREAKUP.replace(
         "mechanisms (rotation); rotationFactor 0.0625;",
-        "mechanisms (turbulence drag rotation); Cv 1; Ci 1; Cd 1;"
+        "mechanisms (turbulence drag rotation); dissipation total;"
+        " Cv 1; Ci 1; Cd 1;"
         " rotationFactor 0.0625;").replace(
         "mode erosion;", "mode beta; betaAlpha 0.5;").replace(
         "spin conserveL; }",

@@ -28,6 +28,7 @@ License
 #include "breakupEvent.H"
 #include "eventRecord.H"
 #include "agglomerateFragmentation.H"
+#include "breakupCriterion.H"
 #include "SHA1.H"
 #include <cmath>
 #include <cstdlib>
@@ -173,38 +174,29 @@ void Foam::breakupEvent::unpack(const char* buf)
     getState(buf, pos, a);
     getState(buf, pos, b);
     attempt = get<int32_t>(buf, pos);
+    load.epsilonResolved = 0;           // replayLoad() gives it
 }
 
 
-std::string Foam::breakupEvent::invalid
+Foam::breakupStresses::load Foam::breakupEvent::replayLoad() const
+{
+    // The resolved part of epsilon from the record's strain rate, as the
+    // driver computed it
+    breakupStresses::load L(load);
+    L.epsilonResolved = breakupCriterion::dissipation(L.nu, 0, S);
+    return L;
+}
+
+
+std::string Foam::breakupEvent::invalidHead
 (
     const char* buf,
-    const List<wordList>& names
+    const label nMechanisms
 ) const
 {
-    const label nMechanisms = names[0].size();
-    const label nFields = names.size() > 2 ? names[2].size() : 0;
     std::ostringstream os;
     std::size_t at = checkAt;
     const uint32_t check = eventRecord::get<uint32_t>(buf, at);
-    at = paddingAt;
-    const int32_t padding = eventRecord::get<int32_t>(buf, at);
-    bool boundedValues = true;
-    forAll(values, i)
-    {
-        boundedValues =
-            boundedValues
-         && (
-                i < nFields
-              ? within(values[i], -valueMax, valueMax)
-              : values[i] == 0
-            );
-    }
-    bool boundedS = true;
-    for (direction c = 0; c < symmTensor::nComponents; ++c)
-    {
-        boundedS = boundedS && within(S[c], -strainMax, strainMax);
-    }
     if (timeIndex < 0)
     {
         os << "time index " << timeIndex << " (valid: >= 0)";
@@ -232,7 +224,19 @@ std::string Foam::breakupEvent::invalid
     {
         os << "time step " << dt << " (valid: > 0, <= " << dtMax << " s)";
     }
-    else if
+    return os.str();
+}
+
+
+std::string Foam::breakupEvent::invalidLoad() const
+{
+    bool boundedS = true;
+    for (direction c = 0; c < symmTensor::nComponents; ++c)
+    {
+        boundedS = boundedS && within(S[c], -strainMax, strainMax);
+    }
+    std::ostringstream os;
+    if
     (
         !within(load.epsilon, 0, epsilonMax)
      || !within(load.nu, nuMin, nuMax)
@@ -255,7 +259,31 @@ std::string Foam::breakupEvent::invalid
            << " m/s, each component of the strain rate within +-"
            << strainMax << " 1/s)";
     }
-    else if (!boundedValues)
+    return os.str();
+}
+
+
+std::string Foam::breakupEvent::invalidTail
+(
+    const char* buf,
+    const label nFields
+) const
+{
+    std::size_t at = paddingAt;
+    const int32_t padding = eventRecord::get<int32_t>(buf, at);
+    bool boundedValues = true;
+    forAll(values, i)
+    {
+        boundedValues =
+            boundedValues
+         && (
+                i < nFields
+              ? within(values[i], -valueMax, valueMax)
+              : values[i] == 0
+            );
+    }
+    std::ostringstream os;
+    if (!boundedValues)
     {
         os << "the model's values (";
         forAll(values, i)
@@ -278,19 +306,38 @@ std::string Foam::breakupEvent::invalid
         os << "padding " << padding << " at byte " << paddingAt
            << " (valid: 0)";
     }
+    return os.str();
+}
+
+
+std::string Foam::breakupEvent::invalid
+(
+    const char* buf,
+    const List<wordList>& names
+) const
+{
+    std::string why = invalidHead(buf, names[0].size());
+    if (why.empty())
+    {
+        why = invalidLoad();
+    }
+    if (why.empty())
+    {
+        why = invalidTail(buf, names.size() > 2 ? names[2].size() : 0);
+    }
     for (const hardSphereState* p : {&parent, &a, &b})
     {
-        if (!os.str().empty())
+        if (!why.empty())
         {
             break;
         }
-        os << invalidState
+        why = invalidState
         (
             *p,
             p == &parent ? "parent" : (p == &a ? "fragment a" : "fragment b")
         );
     }
-    return os.str();
+    return why;
 }
 
 

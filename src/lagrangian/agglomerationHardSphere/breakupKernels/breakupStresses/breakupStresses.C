@@ -40,24 +40,23 @@ Foam::breakupStresses::mechanismTypeNames
     { mechanismType::WALL_IMPACT, "wallImpact" },
 });
 
+const Foam::Enum<Foam::breakupStresses::dissipationType>
+Foam::breakupStresses::dissipationTypeNames
+({
+    { dissipationType::TOTAL, "total" },
+    { dissipationType::SUBGRID, "subgrid" },
+    { dissipationType::RESOLVED_SHEAR, "resolvedShear" },
+});
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::breakupStresses::breakupStresses(const dictionary& dict)
-:
-    on_(false),
-    Cv_(0),
-    Ci_(0),
-    Cd_(0),
-    cRot_(0),
-    Cw_(0)
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::FixedList<bool, 4> Foam::breakupStresses::readMechanisms
+(
+    const dictionary& dict
+)
 {
-    using namespace hardSphereInput;
-    checkKeys
-    (
-        dict, {"mechanisms", "Cv", "Ci", "Cd", "rotationFactor", "Cw"}
-    );
-
+    FixedList<bool, 4> on(false);
     const wordList names(dict.get<wordList>("mechanisms"));
     if (names.empty())
     {
@@ -86,8 +85,37 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
                 << flatOutput(mechanismTypeNames.names())
                 << exit(FatalIOError);
         }
-        on_[mechanismTypeNames[name]] = true;
+        on[mechanismTypeNames[name]] = true;
     }
+
+    return on;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::breakupStresses::breakupStresses(const dictionary& dict)
+:
+    on_(false),
+    Cv_(0),
+    Ci_(0),
+    Cd_(0),
+    cRot_(0),
+    Cw_(0),
+    dissipation_(dissipationType::TOTAL)
+{
+    using namespace hardSphereInput;
+    checkKeys
+    (
+        dict,
+        {
+            "mechanisms", "dissipation", "Cv", "Ci", "Cd", "rotationFactor",
+            "Cw"
+        }
+    );
+
+    on_ = readMechanisms(dict);
+    const wordList names(dict.get<wordList>("mechanisms"));
 
     // A coefficient is read where its mechanism is on, and only there
     const bool t = on_[TURBULENCE];
@@ -96,10 +124,14 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
     const bool w = on_[WALL_IMPACT];
     const wordList need
     ({
-        t ? "Cv" : "", t ? "Ci" : "", d ? "Cd" : "",
-        r ? "rotationFactor" : "", w ? "Cw" : ""
+        t ? "dissipation" : "", t ? "Cv" : "", t ? "Ci" : "",
+        d ? "Cd" : "", r ? "rotationFactor" : "", w ? "Cw" : ""
     });
-    for (const char* key : {"Cv", "Ci", "Cd", "rotationFactor", "Cw"})
+    for
+    (
+        const char* key
+      : {"dissipation", "Cv", "Ci", "Cd", "rotationFactor", "Cw"}
+    )
     {
         if (dict.found(key) && !need.found(key))
         {
@@ -111,6 +143,7 @@ Foam::breakupStresses::breakupStresses(const dictionary& dict)
     }
     if (t)
     {
+        dissipation_ = dissipationTypeNames.get("dissipation", dict);
         Cv_ = getInRange(dict, "Cv", open(0), open(GREAT));
         Ci_ = getInRange(dict, "Ci", open(0), open(GREAT));
     }
@@ -156,6 +189,36 @@ Foam::scalar Foam::breakupStresses::turbulent
 }
 
 
+Foam::scalar Foam::breakupStresses::turbulent
+(
+    const load& L,
+    const scalar da
+) const
+{
+    // doc/breakup.md 1.1 [rec]: the readings of the dissipation rate
+    const scalar sgs = max(L.epsilon - L.epsilonResolved, scalar(0));
+    switch (dissipation_)
+    {
+        case dissipationType::SUBGRID:
+        {
+            return turbulent(sgs, L.nu, L.rhoF, da);
+        }
+        case dissipationType::RESOLVED_SHEAR:
+        {
+            // The resolved strain as a shear: the viscous form at any
+            // size; the sub-grid eddies by their subrange
+            const scalar shear =
+                Cv_*L.rhoF*L.nu*std::sqrt(L.epsilonResolved/L.nu);
+            return std::hypot(shear, turbulent(sgs, L.nu, L.rhoF, da));
+        }
+        default:
+        {
+            return turbulent(L.epsilon, L.nu, L.rhoF, da);
+        }
+    }
+}
+
+
 Foam::scalar Foam::breakupStresses::drag
 (
     const scalar magF,
@@ -190,7 +253,7 @@ Foam::FixedList<Foam::scalar, 3> Foam::breakupStresses::stresses
     FixedList<scalar, 3> s(Zero);
     if (on_[TURBULENCE])
     {
-        s[TURBULENCE] = turbulent(L.epsilon, L.nu, L.rhoF, da);
+        s[TURBULENCE] = turbulent(L, da);
     }
     if (on_[DRAG])
     {
@@ -216,7 +279,8 @@ void Foam::breakupStresses::write(Ostream& os) const
     }
     if (on_[TURBULENCE])
     {
-        os  << ", Cv " << Cv_ << ", Ci " << Ci_;
+        os  << ", dissipation " << dissipationTypeNames[dissipation_]
+            << ", Cv " << Cv_ << ", Ci " << Ci_;
     }
     if (on_[DRAG])
     {

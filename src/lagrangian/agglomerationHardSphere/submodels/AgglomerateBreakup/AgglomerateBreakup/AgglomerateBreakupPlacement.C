@@ -156,6 +156,104 @@ void Foam::AgglomerateBreakup<CloudType>::neighbours
 
 
 template<class CloudType>
+Foam::scalar Foam::AgglomerateBreakup<CloudType>::reachOf
+(
+    const hardSphereState& parent,
+    const agglomerateFragmentation::fragments& f
+)
+{
+    const point& X = parent.x;
+    return max
+    (
+        0.5*parent.d,
+        max(mag(f.a.x - X) + 0.5*f.a.d, mag(f.b.x - X) + 0.5*f.b.d)
+    );
+}
+
+
+template<class CloudType>
+typename Foam::AgglomerateBreakup<CloudType>::parentTable
+Foam::AgglomerateBreakup<CloudType>::allParents
+(
+    const UList<labelPair>& ids,
+    const scalarList& reach
+)
+{
+    List<List<labelPair>> allIds(Pstream::nProcs());
+    List<scalarList> allReach(Pstream::nProcs());
+    allIds[Pstream::myProcNo()] = ids;
+    allReach[Pstream::myProcNo()] = reach;
+    Pstream::gatherList(allIds);
+    Pstream::scatterList(allIds);
+    Pstream::gatherList(allReach);
+    Pstream::scatterList(allReach);
+    parentTable parents;
+    forAll(allIds, proci)
+    {
+        forAll(allIds[proci], k)
+        {
+            parents.insert(allIds[proci][k], allReach[proci][k]);
+        }
+    }
+    return parents;
+}
+
+
+template<class CloudType>
+bool Foam::AgglomerateBreakup<CloudType>::yields
+(
+    const labelPair& id,
+    const point& X,
+    const scalar reach,
+    const UList<neighbour>& near,
+    const parentTable& parents
+)
+{
+    for (const neighbour& nb : near)
+    {
+        const auto r = parents.cfind(nb.id);
+        if
+        (
+            r.found() && nb.id != id
+         && collisionSchedule::lessId
+            (
+                {nb.id.first(), nb.id.second()}, {id.first(), id.second()}
+            )
+         && mag(nb.x - X) < reach + r.val()
+        )
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+template<class CloudType>
+Foam::label Foam::AgglomerateBreakup<CloudType>::firstClearTry
+(
+    const breakupEvent& e,
+    const labelPair& id,
+    const UList<neighbour>& near,
+    agglomerateFragmentation::fragments& f
+) const
+{
+    const label tries = kernel_->fragmentation().tries();
+    for (label t = 0; t < tries; ++t)
+    {
+        const agglomerateFragmentation::fragments g =
+            t ? splitOf(e, t) : f;
+        if (clear(g, near, id))
+        {
+            f = g;
+            return t;
+        }
+    }
+    return -1;
+}
+
+
+template<class CloudType>
 void Foam::AgglomerateBreakup<CloudType>::place(stepSurvey& s)
 {
     const label nParents = s.parents.size();
@@ -164,48 +262,20 @@ void Foam::AgglomerateBreakup<CloudType>::place(stepSurvey& s)
         return;
     }
 
-    // The first try of each parent and the reach of its fragments from its
-    // centre (the same for every direction: a try turns the line)
-    List<agglomerateFragmentation::fragments> first(nParents);
+    // The first try of each parent and the reach of its fragments; the
+    // search's boxes (half width inflate d/2) must meet where a fragment
+    // may touch a neighbour or another parent's fragment
+    List<agglomerateFragmentation::fragments> f(nParents);
     scalarList reach(nParents);
     scalar inflate = 1;
     forAll(s.events, k)
     {
-        const breakupEvent& e = s.events[k];
-        first[k] = splitOf(e, 0);
-        const point& X = e.parent.x;
-        reach[k] = max
-        (
-            0.5*e.parent.d,
-            max
-            (
-                mag(first[k].a.x - X) + 0.5*first[k].a.d,
-                mag(first[k].b.x - X) + 0.5*first[k].b.d
-            )
-        );
-        // The search's boxes (half width inflate d/2) must meet where a
-        // fragment may touch a neighbour or another parent's fragment
-        inflate = max(inflate, 2*reach[k]/e.parent.d);
+        f[k] = splitOf(s.events[k], 0);
+        reach[k] = reachOf(s.events[k].parent, f[k]);
+        inflate = max(inflate, 2*reach[k]/s.events[k].parent.d);
     }
     reduce(inflate, maxOp<scalar>());
-
-    // The parents of every rank with their reach
-    List<List<labelPair>> allIds(Pstream::nProcs());
-    List<scalarList> allReach(Pstream::nProcs());
-    allIds[Pstream::myProcNo()] = s.ids;
-    allReach[Pstream::myProcNo()] = reach;
-    Pstream::gatherList(allIds);
-    Pstream::scatterList(allIds);
-    Pstream::gatherList(allReach);
-    Pstream::scatterList(allReach);
-    HashTable<scalar, labelPair, Hash<labelPair>> reachOf;
-    forAll(allIds, proci)
-    {
-        forAll(allIds[proci], k)
-        {
-            reachOf.insert(allIds[proci][k], allReach[proci][k]);
-        }
-    }
+    const parentTable parents(allParents(s.ids, reach));
 
     List<DynamicList<neighbour>> near;
     neighbours(s, inflate, near);
@@ -213,54 +283,20 @@ void Foam::AgglomerateBreakup<CloudType>::place(stepSurvey& s)
     // Of two parents whose fragments may meet, the one of the higher id
     // waits a step; the others take the first direction that leaves every
     // neighbour untouched, or wait (doc/breakup.md 3.2)
-    const label tries = kernel_->fragmentation().tries();
     label kept = 0;
     forAll(s.parents, k)
     {
         const breakupEvent& e = s.events[k];
-        bool room = true;
-        for (const neighbour& nb : near[k])
-        {
-            const auto r = reachOf.cfind(nb.id);
-            if
-            (
-                r.found() && nb.id != s.ids[k]
-             && collisionSchedule::lessId
-                (
-                    {nb.id.first(), nb.id.second()},
-                    {s.ids[k].first(), s.ids[k].second()}
-                )
-             && mag(nb.x - e.parent.x) < reach[k] + r.val()
-            )
-            {
-                room = false;
-                break;
-            }
-        }
-        label attempt = -1;
-        for (label t = 0; room && t < tries; ++t)
-        {
-            const agglomerateFragmentation::fragments f =
-                t ? splitOf(e, t) : first[k];
-            if (clear(f, near[k], s.ids[k]))
-            {
-                attempt = t;
-                first[k] = f;
-                break;
-            }
-        }
+        const bool first =
+            !yields(s.ids[k], e.parent.x, reach[k], near[k], parents);
+        const label attempt =
+            first ? firstClearTry(e, s.ids[k], near[k], f[k]) : -1;
         if (debug)
         {
             Pout<< "    placement of (" << e.proc << ' ' << e.id << "): "
-                << (room ? "" : "a neighbour's break-up first, ")
+                << (first ? "" : "a neighbour's break-up first, ")
                 << "try " << attempt << ", reach " << reach[k] << ", "
-                << near[k].size() << " neighbours:";
-            for (const neighbour& nb : near[k])
-            {
-                Pout<< " (" << nb.id << ' ' << mag(nb.x - e.parent.x)
-                    << ' ' << nb.d << ')';
-            }
-            Pout<< endl;
+                << near[k].size() << " neighbours" << endl;
         }
         if (attempt < 0)
         {
@@ -271,7 +307,7 @@ void Foam::AgglomerateBreakup<CloudType>::place(stepSurvey& s)
         s.events[kept] = e;
         s.events[kept].attempt = attempt;
         s.ids[kept] = s.ids[k];
-        s.fragments.append(first[k]);
+        s.fragments.append(f[k]);
         ++kept;
     }
     s.parents.setSize(kept);

@@ -89,6 +89,7 @@ Foam::breakupStresses::load Foam::AgglomerateBreakup<CloudType>::loadOf
 
     breakupStresses::load L;
     L.epsilon = breakupCriterion::dissipation(nu, nut, S);
+    L.epsilonResolved = breakupCriterion::dissipation(nu, 0, S);
     L.nu = nu;
     L.rhoF = cloud.rho()[celli];
     L.omega = p.omega();
