@@ -80,20 +80,7 @@ Description
 
 int main(int argc, char *argv[])
 {
-    argList::addNote
-    (
-        "Transient solver for incompressible laminar or LES flow with a"
-        " Lagrangian particle cloud (two-way coupled, constant mass flux"
-        " through fvOptions, optional frozen flow)."
-    );
-
-    argList::addOption
-    (
-        "cloud",
-        "name",
-        "Run this cloud only (default: the list clouds in"
-        " constant/cloudProperties, else kinematicCloud)"
-    );
+    #include "addSolverOptions.H"
 
     #include "postProcess.H"
 
@@ -149,23 +136,7 @@ int main(int argc, char *argv[])
 
         if (!frozenFlow)
         {
-            // --- Pressure-velocity PIMPLE corrector loop
-            while (pimple.loop())
-            {
-                #include "UEqn.H"
-
-                // --- Pressure corrector loop
-                while (pimple.correct())
-                {
-                    #include "pEqn.H"
-                }
-
-                if (pimple.turbCorr())
-                {
-                    laminarTransport.correct();
-                    turbulence->correct();
-                }
-            }
+            #include "fluidStep.H"
         }
 
         runTime.write();
