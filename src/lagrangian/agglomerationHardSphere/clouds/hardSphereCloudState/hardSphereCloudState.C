@@ -181,6 +181,96 @@ bool earliestTime(const Foam::Time& time)
     return true;
 }
 
+
+//- No rank has the record of the time: stop if particle fields of a
+//  solver's write (not initial ones written by hand) are there, or if
+//  another cloud's record names this cloud (this cloud's write was cut
+//  off before it began)
+void checkWithoutRecord
+(
+    const Foam::Time& time,
+    const Foam::word& cloudName,
+    const Foam::IOobject& io,
+    const Foam::wordList& there,
+    const bool initial,
+    const Foam::word& namer
+)
+{
+    using namespace Foam;
+    if (there.size() && !initial)
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloudName << " at time " << time.timeName()
+            << ": the particle fields " << there << " are there but"
+            << " the record " << io.objectPath() << " is missing: the"
+            << " uniform folder of the time or of the cloud was lost,"
+            << " or its write cut off. Restart from an earlier time, or"
+            << " remove " << time.timePath()/cloud::prefix/cloudName
+            << " to restart without particles (particles written by"
+            << " hand at a later time than the case's first need the"
+            << " record too: aggloTools.cloud.write_record)"
+            << exit(FatalError);
+    }
+    if (!namer.empty())
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloudName << " at time " << time.timeName()
+            << ": the record of cloud " << namer << " of this time"
+            << " names this cloud, but its record " << io.objectPath()
+            << " is missing: its write never began (cut off). Restart"
+            << " from an earlier time" << exit(FatalError);
+    }
+}
+
+
+//- The record's counts against the particles read: the whole cloud's
+//  particles and primaries, and this rank's fields
+void checkCounts
+(
+    const Foam::Time& time,
+    const Foam::word& cloudName,
+    const Foam::IOobject& io,
+    const Foam::localIOdictionary& record,
+    const Foam::label nParticles,
+    const Foam::label nTotal,
+    const Foam::label nPrimTotal,
+    const Foam::wordList& missing,
+    const Foam::wordList& there
+)
+{
+    using namespace Foam;
+    const label recTotal = record.get<label>("nParticlesTotal");
+    const label recPrim = record.get<label>("nPrimariesTotal");
+
+    if (nTotal != recTotal)
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloudName << " at time " << time.timeName()
+            << ": " << nTotal << " particles read, but " << recTotal
+            << " were written (" << io.objectPath() << "). A particle file"
+            << " of this time is missing or cut off; restart from an"
+            << " earlier time" << exit(FatalError);
+    }
+    if (nParticles > 0 && missing.size())
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloudName << " at time " << time.timeName()
+            << ": the particle fields " << missing << " are missing in "
+            << time.timePath()/cloud::prefix/cloudName << " (written: "
+            << there << "); without them agglomerates would become"
+            << " primaries. Restart from an earlier time"
+            << exit(FatalError);
+    }
+    if (nPrimTotal != recPrim)
+    {
+        FatalErrorInFunction
+            << "Cloud " << cloudName << " at time " << time.timeName()
+            << ": the particles read hold " << nPrimTotal << " primaries,"
+            << " but " << recPrim << " were written ("
+            << io.objectPath() << ")" << exit(FatalError);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -252,29 +342,7 @@ Foam::label Foam::hardSphereCloudState::check
 
     if (!anywhere)
     {
-        if (there.size() && !initial)
-        {
-            FatalErrorInFunction
-                << "Cloud " << cloudName << " at time " << time.timeName()
-                << ": the particle fields " << there << " are there but"
-                << " the record " << io.objectPath() << " is missing: the"
-                << " uniform folder of the time or of the cloud was lost,"
-                << " or its write cut off. Restart from an earlier time, or"
-                << " remove " << time.timePath()/cloud::prefix/cloudName
-                << " to restart without particles (particles written by"
-                << " hand at a later time than the case's first need the"
-                << " record too: aggloTools.cloud.write_record)"
-                << exit(FatalError);
-        }
-        if (!namer.empty())
-        {
-            FatalErrorInFunction
-                << "Cloud " << cloudName << " at time " << time.timeName()
-                << ": the record of cloud " << namer << " of this time"
-                << " names this cloud, but its record " << io.objectPath()
-                << " is missing: its write never began (cut off). Restart"
-                << " from an earlier time" << exit(FatalError);
-        }
+        checkWithoutRecord(time, cloudName, io, there, initial, namer);
         // (A rank without the fields or the naming record returns; the
         // one that has them stops the run)
         return 0;
@@ -297,36 +365,11 @@ Foam::label Foam::hardSphereCloudState::check
             << " " << io.objectPath() << " says complete false): it was"
             << " cut off. Restart from an earlier time" << exit(FatalError);
     }
-    const label recTotal = record.get<label>("nParticlesTotal");
-    const label recPrim = record.get<label>("nPrimariesTotal");
-
-    if (nTotal != recTotal)
-    {
-        FatalErrorInFunction
-            << "Cloud " << cloudName << " at time " << time.timeName()
-            << ": " << nTotal << " particles read, but " << recTotal
-            << " were written (" << io.objectPath() << "). A particle file"
-            << " of this time is missing or cut off; restart from an"
-            << " earlier time" << exit(FatalError);
-    }
-    if (nParticles > 0 && missing.size())
-    {
-        FatalErrorInFunction
-            << "Cloud " << cloudName << " at time " << time.timeName()
-            << ": the particle fields " << missing << " are missing in "
-            << time.timePath()/cloud::prefix/cloudName << " (written: "
-            << there << "); without them agglomerates would become"
-            << " primaries. Restart from an earlier time"
-            << exit(FatalError);
-    }
-    if (nPrimTotal != recPrim)
-    {
-        FatalErrorInFunction
-            << "Cloud " << cloudName << " at time " << time.timeName()
-            << ": the particles read hold " << nPrimTotal << " primaries,"
-            << " but " << recPrim << " were written ("
-            << io.objectPath() << ")" << exit(FatalError);
-    }
+    checkCounts
+    (
+        time, cloudName, io, record, nParticles, nTotal, nPrimTotal,
+        missing, there
+    );
 
     // Written by a run with break-up (absent: none handed out; the cloud
     // checks the particles' fragment ids against it)

@@ -65,28 +65,21 @@ Foam::CloudCellOrder<CloudType>::CloudCellOrder
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
+void Foam::CloudCellOrder<CloudType>::permutation
+(
+    const UList<parcelType*>& parcels,
+    List<parcelType*>& slots,
+    labelList& from
+)
 {
-    const label n = cloud.size();
-    if (n < 2)
-    {
-        return;
-    }
-
-    // The parcels in list order and their cells
-    List<parcelType*> parcels(n);
-    labelList cells(n);
-    {
-        label i = 0;
-        for (parcelType& p : cloud)
-        {
-            parcels[i] = &p;
-            cells[i] = p.cell();
-            ++i;
-        }
-    }
+    const label n = parcels.size();
 
     // The new list order: by cell, the list order within a cell
+    labelList cells(n);
+    forAll(parcels, i)
+    {
+        cells[i] = parcels[i]->cell();
+    }
     labelList order(identity(n));
     std::stable_sort
     (
@@ -111,37 +104,36 @@ void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
     {
         slotOf[byAddress[k]] = k;
     }
-    labelList from(n);
+    from.setSize(n);
     forAll(order, k)
     {
         from[k] = slotOf[order[k]];
     }
-    slotOf.clear();
-    order.clear();
 
-    List<parcelType*> slots(n);
+    slots.setSize(n);
     forAll(byAddress, k)
     {
         slots[k] = parcels[byAddress[k]];
     }
-    byAddress.clear();
+}
 
-    // Unlink every parcel (nothing is freed)
-    for (parcelType* p : parcels)
-    {
-        cloud.remove(p);
-    }
-    parcels.clear();
 
-    // Move the contents along the cycles of the permutation, through one
-    // parcel-sized buffer: a parcel is copied into its new slot, the old
-    // contents destroyed in place
+template<class CloudType>
+void Foam::CloudCellOrder<CloudType>::moveContents
+(
+    const UList<parcelType*>& slots,
+    labelList& from
+)
+{
+    // Along the cycles of the permutation, through one parcel-sized
+    // buffer: a parcel is copied into its new slot, the old contents
+    // destroyed in place
     typename std::aligned_storage
     <
         sizeof(parcelType), alignof(parcelType)
     >::type buffer;
 
-    for (label k = 0; k < n; ++k)
+    forAll(from, k)
     {
         if (from[k] < 0 || from[k] == k)
         {
@@ -167,8 +159,40 @@ void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
 
         saved->~parcelType();
     }
+}
 
-    // Re-link in the new order
+
+template<class CloudType>
+void Foam::CloudCellOrder<CloudType>::sort(CloudType& cloud)
+{
+    const label n = cloud.size();
+    if (n < 2)
+    {
+        return;
+    }
+
+    // The parcels in list order
+    List<parcelType*> parcels(n);
+    {
+        label i = 0;
+        for (parcelType& p : cloud)
+        {
+            parcels[i++] = &p;
+        }
+    }
+
+    List<parcelType*> slots;
+    labelList from;
+    permutation(parcels, slots, from);
+
+    // Unlink every parcel (nothing is freed), move the contents, re-link
+    // in the new order
+    for (parcelType* p : parcels)
+    {
+        cloud.remove(p);
+    }
+    parcels.clear();
+    moveContents(slots, from);
     for (parcelType* p : slots)
     {
         cloud.append(p);
