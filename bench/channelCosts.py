@@ -47,12 +47,13 @@ import time
 from pathlib import Path
 
 from aggloTools import times
-from aggloTools.runner import bench_module, project_dir, tutorial_module
+from aggloTools.runner import (bench_module, package_command, project_dir,
+                               tutorial_module)
 
 ROOT = project_dir()
 TUTORIAL = ROOT / "tutorials" / "verticalChannel"
-channel = tutorial_module("verticalChannel", "channel")
-channelParticles = tutorial_module("verticalChannel", "channelParticles")
+channel = tutorial_module("verticalChannel", "channel.case.settings")
+channelParticles = tutorial_module("verticalChannel", "channel.case.particles")
 channelProfile = bench_module("channelProfile")
 
 OUT = ROOT / "bench" / "runs" / "channelCosts"
@@ -221,9 +222,9 @@ def preset_costs(pname, nps, steps, dec_timeout):
     out["blockMesh_s"] = run(["blockMesh"], mesh, "log.blockMesh")[0]
     run(["postProcess", "-func", "writeCellCentres", "-time", "0"], mesh,
         "log.postProcess")
-    out["init_s"] = run([sys.executable, str(TUTORIAL / "channel.py"),
-                         "init", "."], mesh, "log.init", "python3")[0]
-    py = [sys.executable, str(TUTORIAL / "channelParticles.py")]
+    out["init_s"] = run(package_command(TUTORIAL, "channel.case", "init",
+                                        "."), mesh, "log.init", "python3")[0]
+    py = package_command(TUTORIAL, "channel.case.particles")
     for n in nps:
         r = out[f"np{n}"] = {}
         un = base / f"unladen_np{n}"

@@ -113,7 +113,8 @@ def ratios(base, this):
 def projection_h(preset, costs_np):
     """Hours of a C1 of the preset at its phase lengths from one build's
     step costs on one rank count: {phase: h, "total": h}."""
-    p = tutorial_module("verticalChannel", "channel").preset(preset)
+    p = tutorial_module("verticalChannel",
+                        "channel.case.settings").preset(preset)
     out = {ph: p[ph] / p["dtStar"] * costs_np[stage]["step_s"] / 3600
            for ph, stage in PHASES}
     out["total"] = sum(out.values())

@@ -62,11 +62,12 @@ from pathlib import Path
 import numpy as np
 
 from aggloTools import batches, fields, foamfile, stages, times
-from aggloTools.runner import bench_module, project_dir, run, tutorial_module
+from aggloTools.runner import (bench_module, package_command, project_dir,
+                               run, tutorial_module)
 
 ROOT = project_dir()
 TUTORIAL = ROOT / "tutorials" / "verticalChannel"
-channel = tutorial_module("verticalChannel", "channel")
+channel = tutorial_module("verticalChannel", "channel.case.settings")
 
 channelCosts = bench_module("channelCosts")
 variants = bench_module("channelSolverVariants")
@@ -130,8 +131,8 @@ def developed_flow(a):
         run(["blockMesh"], start, "log.blockMesh")
         run(["postProcess", "-func", "writeCellCentres", "-time", "0"],
             start, "log.postProcess")
-        run([sys.executable, str(TUTORIAL / "channel.py"), "init", "."],
-            start, "log.init")
+        run(package_command(TUTORIAL, "channel.case", "init", "."), start,
+            "log.init")
         solve(start, "log.develop")
     write_settings(start, "base")
     set_stage(start, a.preset, steps_of(a.preset, a.spinup))

@@ -27,12 +27,20 @@ def python_files():
 
 
 def module_name(f):
-    """aggloTools.<module> for the package, the file's stem otherwise
-    (tutorial scripts import each other by that name)."""
+    """aggloTools.<module> for the package; a tutorial package's module by
+    its dotted name from the package's top folder (channel.post.report,
+    channel for its __init__); the file's stem otherwise (tutorial scripts
+    import each other by that name)."""
     if PACKAGE in f.parents:
         stem = f.stem
         return "aggloTools" if stem == "__init__" else f"aggloTools.{stem}"
-    return f.stem
+    parts = [] if f.stem == "__init__" else [f.stem]
+    folder = f.parent
+    while (folder / "__init__.py").is_file() and "tutorials" in \
+            folder.relative_to(ROOT).parts[:1]:
+        parts.insert(0, folder.name)
+        folder = folder.parent
+    return ".".join(parts)
 
 
 def imports(f):
@@ -103,8 +111,8 @@ def test_cycle_search_finds_a_cycle():
 def test_no_import_cycle():
     g = graph()
     # the graph is the real one: the tutorials use the package
-    assert "aggloTools.placement" in g["channelParticles"]
-    assert "channel" in g["channelPost"]
+    assert "aggloTools.placement" in g["channel.case.particles"]
+    assert "channel.case.settings" in g["channel.post.postprocess"]
     assert "channelCosts" in g["channelSolverSettings"]
     assert cycles(g) == []
 

@@ -2,10 +2,14 @@
 imported as a module brings the scripts of its folder that it imports
 (found in its source, at any depth: no list of siblings to keep, no
 search-path edit), each once; a script whose import is not a sibling
-(the package, the standard library) brings nothing else."""
+(the package, the standard library) brings nothing else; a module of a
+tutorial's package is imported by its dotted name, its package found in
+the tutorial's folder."""
 
 import subprocess
 import sys
+
+import pytest
 
 from aggloTools import runner
 
@@ -40,15 +44,30 @@ def test_siblings_loaded_in_their_order(tmp_path):
             sys.modules.pop(n, None)
 
 
-def test_a_tutorial_script_without_its_siblings_loaded_first():
-    """channelReport imports channel, channelContacts, ...: loaded on its
-    own, in a fresh interpreter, it finds them (the tests kept a
-    hand-ordered list of 17 modules before)."""
+def test_a_tutorial_package_module_without_a_module_list():
+    """channel.post.report imports channel.case.settings,
+    channel.post.contacts, ...: loaded on its own, in a fresh interpreter,
+    it finds them in the tutorial's package (the tests kept a hand-ordered
+    list of 17 modules before); the package is the tutorial's folder's."""
     code = ("from aggloTools import runner; import sys; "
-            "runner.tutorial_module('verticalChannel', 'channelReport'); "
-            "print(sys.modules['channel'].__file__)")
+            "m = runner.tutorial_module('verticalChannel', "
+            "'channel.post.report'); "
+            "print(m.__name__, m.settings.__name__, "
+            "sys.modules['channel'].__file__)")
     res = subprocess.run([sys.executable, "-c", code], capture_output=True,
                          text=True)
     assert res.returncode == 0, res.stderr
-    assert res.stdout.strip() == str(
-        runner.project_dir() / "tutorials" / "verticalChannel" / "channel.py")
+    init = runner.project_dir() / "tutorials" / "verticalChannel" / \
+        "channel" / "__init__.py"
+    assert res.stdout.split() == ["channel.post.report",
+                                  "channel.case.settings", str(init)]
+
+
+def test_a_folder_without_init_is_not_a_package(tmp_path):
+    """A dotted name whose first part is no package folder is refused by
+    name (not imported from elsewhere on the search path)."""
+    (tmp_path / "zzPlain").mkdir()
+    with pytest.raises(ImportError, match=r"zzPlain: not a package \(no "
+                       r"__init__\.py\)"):
+        runner._package(tmp_path / "zzPlain")
+    assert "zzPlain" not in sys.modules

@@ -1,9 +1,9 @@
 """Every user-facing command answers -h (or -help) with what it does and
 its options, exit status 0, and runs nothing: the Allruns, Allcleans and
 Alltest of the project and its tutorials, the set-up, the tutorials'
-Python drivers, the benchmarks and the solver and utilities. (-h of an Allclean cleaned
-the build; channelPost.py took -h for a preset; channel.py and
-channelParticles.py exited 1.)"""
+Python drivers, the benchmarks and the solver and utilities. (-h of an
+Allclean cleaned the build; the channel's post-processing took -h for a
+preset; its settings and particles commands exited 1.)"""
 
 import subprocess
 import sys
@@ -30,12 +30,12 @@ SHELL = [
         "bendDeposition", "laminarChannel")]
 
 PYTHON = [
-    ("verticalChannel", "channel.py", "settings"),
-    ("verticalChannel", "channelParticles.py", "release"),
-    ("verticalChannel", "channelPost.py", "--reference"),
-    ("verticalChannel", "channelRegime.py", "post"),
-    ("verticalChannel", "channelReplay.py", "--reference"),
-    ("verticalChannel", "channelRuns.py", "-preset"),
+    ("verticalChannel", "-m channel.case", "settings"),
+    ("verticalChannel", "-m channel.case.particles", "release"),
+    ("verticalChannel", "-m channel.post", "--reference"),
+    ("verticalChannel", "-m channel.regime", "post"),
+    ("verticalChannel", "-m channel.post.replay", "--reference"),
+    ("verticalChannel", "-m channel", "-preset"),
     ("shearFlowValidation", "shearFlow.py", "settings"),
     ("shearFlowValidation", "shearPost.py", "rejudge"),
     ("shearFlowValidation", "shearReplay.py", "preset"),
@@ -73,7 +73,7 @@ def test_shell_commands(foam_env, folder, cmd, words):
 def test_python_drivers(foam_env, tutorial, script, words):
     folder = TUT / tutorial
     before = sorted(p.name for p in folder.iterdir())
-    res = subprocess.run([sys.executable, script, "-h"], cwd=folder,
+    res = subprocess.run([sys.executable, *script.split(), "-h"], cwd=folder,
                          capture_output=True, text=True, timeout=120)
     assert res.returncode == 0, res.stdout[-1000:] + res.stderr[-1000:]
     assert words in res.stdout
@@ -84,7 +84,7 @@ def test_python_drivers(foam_env, tutorial, script, words):
 def test_benchmarks(foam_env, script):
     folder = ROOT / "bench"
     before = sorted(p.name for p in folder.iterdir())
-    res = subprocess.run([sys.executable, script, "-h"], cwd=folder,
+    res = subprocess.run([sys.executable, *script.split(), "-h"], cwd=folder,
                          capture_output=True, text=True, timeout=120)
     assert res.returncode == 0, res.stdout[-1000:] + res.stderr[-1000:]
     assert res.stdout.startswith("usage:")

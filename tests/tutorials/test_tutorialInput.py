@@ -13,19 +13,21 @@ import pytest
 from aggloTools.runner import project_dir, tutorial_module
 
 ROOT = project_dir()
+#: The channel tutorial's settings command, in its folder
+CHANNEL_CASE = ["-m", "channel.case"]
 
 
 @pytest.mark.parametrize("tutorial,script,args,block", [
-    ("shearFlowValidation", "shearFlow.py", ["settings", "ci", "EAM"],
+    ("shearFlowValidation", ["shearFlow.py"], ["settings", "ci", "EAM"],
      "ci\n{"),
-    ("shearFlowValidation", "shearFlow.py", ["settings", "ci", "EAM"],
+    ("shearFlowValidation", ["shearFlow.py"], ["settings", "ci", "EAM"],
      "common\n{"),
-    ("verticalChannel", "channel.py", ["settings", "smoke", "C1",
-                                        "unladen"], "smoke\n{"),
-    ("verticalChannel", "channel.py", ["settings", "smoke", "C1",
-                                        "unladen"], "common\n{"),
-    ("verticalChannel", "channel.py", ["settings", "smoke", "C1",
-                                        "unladen"], "C1  {"),
+    ("verticalChannel", CHANNEL_CASE, ["settings", "smoke", "C1",
+                                       "unladen"], "smoke\n{"),
+    ("verticalChannel", CHANNEL_CASE, ["settings", "smoke", "C1",
+                                       "unladen"], "common\n{"),
+    ("verticalChannel", CHANNEL_CASE, ["settings", "smoke", "C1",
+                                       "unladen"], "C1  {"),
 ])
 def test_presets_reject_unknown_entries(tmp_path, foam_env, tutorial,
                                         script, args, block):
@@ -34,14 +36,14 @@ def test_presets_reject_unknown_entries(tmp_path, foam_env, tutorial,
     case = tmp_path / tutorial
     shutil.copytree(ROOT / "tutorials" / tutorial, case,
                     ignore=shutil.ignore_patterns("runs", "results"))
-    good = subprocess.run([sys.executable, script] + args, cwd=case,
+    good = subprocess.run([sys.executable, *script] + args, cwd=case,
                           capture_output=True, text=True)
     assert good.returncode == 0, good.stderr
     presets = case / "presets"
     text = presets.read_text()
     assert block in text
     presets.write_text(text.replace(block, block + " nParticels 10;", 1))
-    bad = subprocess.run([sys.executable, script] + args, cwd=case,
+    bad = subprocess.run([sys.executable, *script] + args, cwd=case,
                          capture_output=True, text=True)
     assert bad.returncode != 0
     assert "nParticels" in bad.stderr + bad.stdout
@@ -75,16 +77,18 @@ def test_shear_step_out_of_range(tmp_path, foam_env, entry, value):
         bad.stderr
 
 
-@pytest.mark.parametrize("tutorial,script,args", [
-    ("shearFlowValidation", "shearFlow", ["settings", "ci", "EAM"]),
-    ("verticalChannel", "channel", ["settings", "smoke", "C1", "unladen"]),
+@pytest.mark.parametrize("tutorial,cmd,script,args", [
+    ("shearFlowValidation", ["shearFlow.py"], "shearFlow",
+     ["settings", "ci", "EAM"]),
+    ("verticalChannel", CHANNEL_CASE, "channel.case.settings",
+     ["settings", "smoke", "C1", "unladen"]),
 ])
 def test_case_settings_reject_unknown_entries(tmp_path, foam_env, tutorial,
-                                              script, args):
+                                              cmd, script, args):
     """The generated caseSettings pass; a misspelt entry added by hand
     stops the tutorial's scripts that read it, naming the entry."""
     tut = ROOT / "tutorials" / tutorial
-    text = subprocess.run([sys.executable, f"{script}.py"] + args, cwd=tut,
+    text = subprocess.run([sys.executable, *cmd] + args, cwd=tut,
                           capture_output=True, text=True, check=True).stdout
     (tmp_path / "system").mkdir()
     f = tmp_path / "system" / "caseSettings"
@@ -130,13 +134,13 @@ def _edited(tmp_path, tutorial, block, entry, value):
 ])
 def test_channel_preset_values_checked(tmp_path, foam_env, block, entry,
                                        value, words):
-    """A preset value of the wrong type or out of range stops channel.py
-    before anything runs, naming the preset, the entry and what it must
-    be: before, 'abc', 0 and '(16 16)' ended in tracebacks, -5 particles
-    failed after the unladen stage, 2000.7 was truncated, and a reversed
-    window or a negative phase was accepted."""
+    """A preset value of the wrong type or out of range stops the settings
+    command before anything runs, naming the preset, the entry and what it
+    must be: before, 'abc', 0 and '(16 16)' ended in tracebacks, -5
+    particles failed after the unladen stage, 2000.7 was truncated, and a
+    reversed window or a negative phase was accepted."""
     case = _edited(tmp_path, "verticalChannel", block, entry, value)
-    res = subprocess.run([sys.executable, "channel.py", "settings", "smoke",
+    res = subprocess.run([sys.executable, *CHANNEL_CASE, "settings", "smoke",
                           "C1", "agglomeration"], cwd=case,
                          capture_output=True, text=True)
     assert res.returncode == 1, res.stdout[-500:]
@@ -163,7 +167,7 @@ def test_channel_configuration_values_checked(tmp_path, foam_env, entry,
     new = re.sub(rf"\b{entry} [^;]*;", f"{entry} {value};", line)
     assert new != line
     presets.write_text(text.replace(line, new, 1))
-    res = subprocess.run([sys.executable, "channel.py", "settings", "smoke",
+    res = subprocess.run([sys.executable, *CHANNEL_CASE, "settings", "smoke",
                           "C2", "agglomeration"], cwd=case,
                          capture_output=True, text=True)
     assert res.returncode == 1
@@ -194,7 +198,7 @@ def test_presets_entry_given_twice(tmp_path, foam_env):
     replaced the earlier one silently), naming the entry and the file."""
     case = _edited(tmp_path, "verticalChannel", "smoke\n{", "nParticles",
                    "2000;\n    nParticles 3000")
-    res = subprocess.run([sys.executable, "channel.py", "settings", "smoke",
+    res = subprocess.run([sys.executable, *CHANNEL_CASE, "settings", "smoke",
                           "C1", "unladen"], cwd=case, capture_output=True,
                          text=True)
     assert res.returncode == 1 and "Traceback" not in res.stderr
@@ -203,16 +207,17 @@ def test_presets_entry_given_twice(tmp_path, foam_env):
 
 
 def test_channel_replay_refusals(foam_env):
-    """channelReplay.py: an unknown preset exits 1 naming the valid ones
+    """channel.post.replay: an unknown preset exits 1 naming the valid ones
     (it exited 0 with 'no collision event logs under runs/bogus'); -h
     prints its options and exits 0."""
     tut = ROOT / "tutorials" / "verticalChannel"
-    res = subprocess.run([sys.executable, "channelReplay.py", "bogus"],
-                         cwd=tut, capture_output=True, text=True)
+    replay = [sys.executable, "-m", "channel.post.replay"]
+    res = subprocess.run(replay + ["bogus"], cwd=tut, capture_output=True,
+                         text=True)
     assert res.returncode == 1 and "unknown preset 'bogus'" in res.stderr
     assert "smoke" in res.stderr
-    res = subprocess.run([sys.executable, "channelReplay.py", "-h"],
-                         cwd=tut, capture_output=True, text=True)
+    res = subprocess.run(replay + ["-h"], cwd=tut, capture_output=True,
+                         text=True)
     assert res.returncode == 0 and "--reference" in res.stdout
 
 

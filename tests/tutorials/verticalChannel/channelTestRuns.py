@@ -26,11 +26,14 @@ def run_smoke(tmp, np_):
     if case.exists():
         shutil.rmtree(case)
     case.mkdir(parents=True)
-    scripts = sorted(f.name for f in TUTORIAL.glob("channel*.py"))
     for name in ["0.orig", "constant", "system", "presets",
-                 "breakupModels", "Allrun", "Allclean"] + scripts:
+                 "breakupModels", "channel", "Allrun", "Allclean"]:
         src = TUTORIAL / name
-        (shutil.copytree if src.is_dir() else shutil.copy2)(src, case / name)
+        if src.is_dir():
+            shutil.copytree(src, case / name,
+                            ignore=shutil.ignore_patterns("__pycache__"))
+        else:
+            shutil.copy2(src, case / name)
     res = subprocess.run(
         ["./Allrun", "-preset", "smoke", "-configs", "C1 C2", "-np",
          str(np_), "-every", "600"], cwd=case, stdout=subprocess.PIPE,

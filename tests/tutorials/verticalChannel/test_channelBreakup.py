@@ -19,7 +19,7 @@ import pytest
 from aggloTools.stats import read_stats
 from channelTestRuns import TUTORIAL, script
 
-channel = script("channel")
+channel = script("channel.case.settings")
 
 
 def copy(tmp_path, breakup):
@@ -36,9 +36,9 @@ def copy(tmp_path, breakup):
 
 
 def settings(case, stage):
-    res = subprocess.run([sys.executable, "channel.py", "settings", "smoke",
-                          "C2", stage], cwd=case, capture_output=True,
-                         text=True)
+    res = subprocess.run([sys.executable, "-m", "channel.case", "settings",
+                          "smoke", "C2", stage], cwd=case,
+                         capture_output=True, text=True)
     return res
 
 

@@ -1,4 +1,4 @@
-"""The Python driver of the channel tutorial (channelRuns.py, behind a
+"""The Python driver of the channel tutorial (channel.case.runs, behind a
 thin Allrun) writes the same files as the shell Allrun it replaced (its
 last version, commit 6c04c7b): the `smoke` preset with configurations C1
 and C2, serially and on 2 ranks, every file of runs/smoke byte for byte
@@ -9,7 +9,9 @@ takes its Allrun and channel.py from 6c04c7b (the shell called
 subcommands of channel.py that the Python driver replaced by function
 calls; its functions are unchanged since), so only the driver differs
 (about 2 min). The old copy's presets drop the UTolerance entries its
-channel.py does not know (smoke's value is fvSolution's default)."""
+channel.py does not know (smoke's value is fvSolution's default); its
+Allrun's channelPost.py and channelReplay.py are two-line scripts that
+run today's channel.post and channel.post.replay."""
 
 import os
 import re
@@ -60,6 +62,9 @@ def text_without(path, tut):
     if path.name == "caseSettings":
         data = b"".join(ln for ln in data.splitlines(keepends=True)
                         if not ln.startswith(b"UTolerance"))
+        # the command named in its head: channel.py then, the package now
+        data = data.replace(b"//     channel.py settings",
+                            b"//     python -m channel.case settings")
         data = BREAKUP_SETTINGS.sub(b"", data)
     if path.name == "cloudCommon":
         data = b"".join(ln for ln in data.splitlines(keepends=True)
@@ -82,6 +87,22 @@ def test_python_driver_writes_what_the_shell_driver_wrote(tmp_path,
         tuts[name] = t
     for n, text in old.items():
         (tuts["old"] / n).write_text(text)
+    # The old Allrun's post-processing calls scripts that are now the
+    # package's modules: the same code, reached by their old names, with
+    # today's presets while they run (the package reads them; the old
+    # channel.py reads the shortened ones below)
+    shutil.copy(tuts["old"] / "presets", tuts["old"] / "presets.today")
+    for n, module in (("channelPost.py", "channel.post"),
+                      ("channelReplay.py", "channel.post.replay")):
+        (tuts["old"] / n).write_text(
+            "import runpy, shutil\n"
+            "shutil.copy('presets', 'presets.old')\n"
+            "shutil.copy('presets.today', 'presets')\n"
+            "try:\n"
+            f"    runpy.run_module({module!r}, run_name='__main__', "
+            "alter_sys=True)\n"
+            "finally:\n"
+            "    shutil.copy('presets.old', 'presets')\n")
     # nor the break-up entry that cloudCommon merges
     common = tuts["old"] / "constant" / "cloudCommon"
     common.write_bytes(text_without(common, tuts["old"]))

@@ -1,5 +1,5 @@
-"""channelRegime.py's runner (the regime study's variants, one Allrun
-each), channelRegimeAnalysis's concentration and rates between writes and
+"""channel.regime.study's runner (the regime study's variants, one Allrun
+each), channel.regime.analysis's concentration and rates between writes and
 the progress of an unfinished variant; the study's post-processing is
 tested on the smoke runs in test_channelSmokeOutputs.py."""
 
@@ -12,13 +12,13 @@ from channelTestRuns import script
 
 
 def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
-    """channelRegime.py run -j 2: two variants' Allruns at once (each waits
+    """channel.regime run -j 2: two variants' Allruns at once (each waits
     for the other at a barrier: run one after the other, the barrier
     breaks), each with the ranks asked for and its output in its own
     log; the exit status is the first failed variant's, in the order
     given, and 0 when all finish."""
-    regime = script("channelRegime")
-    monkeypatch.setattr(regime, "HERE", tmp_path)
+    regime = script("channel.regime.study")
+    monkeypatch.setattr(regime, "TUTORIAL", tmp_path)
     meet = threading.Barrier(2, timeout=10)
     calls = []
 
@@ -29,19 +29,19 @@ def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
         return {"regime32": 0, "regime48": 3, "regime64": 5}[cmd[2]]
 
     monkeypatch.setattr(regime.subprocess, "call", fake_call)
-    assert regime.main(["channelRegime.py", "run", "-np", "1", "-j", "2",
+    assert regime.main(["channel.regime", "run", "-np", "1", "-j", "2",
                         "regime32", "regime48"]) == 3
     assert sorted(c[2] for c in calls) == ["regime32", "regime48"]
     assert all(c[3:] == ["-np", "1"] for c in calls)
     for n in ("regime32", "regime48"):
         assert (tmp_path / "runs" / f"{n}.log").read_text() == f"ran {n}\n"
-    assert regime.main(["channelRegime.py", "run", "-j", "2", "regime64",
+    assert regime.main(["channel.regime", "run", "-j", "2", "regime64",
                         "regime48"]) == 5
     meet.reset()
-    assert regime.main(["channelRegime.py", "run", "-j", "2", "regime32",
+    assert regime.main(["channel.regime", "run", "-j", "2", "regime32",
                         "regime32"]) == 0
     with pytest.raises(SystemExit):
-        regime.main(["channelRegime.py", "run", "-j", "0", "regime32"])
+        regime.main(["channel.regime", "run", "-j", "0", "regime32"])
 
 
 END = "\n// ****************************************************** //\n"
@@ -53,11 +53,11 @@ def write_dispersion(p, case, with_stats=True):
     written as the averages over 10 and 30 steps at T* 0.5 and 1.5 after
     the release; stats.dat: 4 collisions and 1 wall impact by the first
     write, 24 and 11 by the second (counters from 0 at the release)."""
-    import channel
+    settings = script("channel.case.settings")
     nb = 16
     later = np.ones(nb)
     later[[0, -1]] = 3.0
-    t0 = channel.end_time(p, "unladen")
+    t0 = settings.end_time(p, "unladen")
     writes = ((10, np.ones(nb), t0 + 0.5 * p["tScale"], 4, 1),
               (30, (10 * np.ones(nb) + 20 * later) / 30,
                t0 + 1.5 * p["tScale"], 24, 11))
@@ -93,9 +93,9 @@ def test_concentration_between_writes(tmp_path):
     adds the rates: 4 and 20 collisions over 0.5 and 1 T* are 8 and 20
     per T*, times s^2 = (6e6/N)^2; 1 and 10 wall impacts are 2 and 10 per
     T*, over N particles."""
-    import channel
-    regime = script("channelRegimeAnalysis")
-    p = channel.preset("smoke")
+    settings = script("channel.case.settings")
+    regime = script("channel.regime.analysis")
+    p = settings.preset("smoke")
     t0 = write_dispersion(p, tmp_path)
     h = regime.concentration_history(p, tmp_path)
     T0 = t0 / p["tScale"]
@@ -126,9 +126,9 @@ def test_concentration_between_writes(tmp_path):
 def test_dispersion_history_without_readable_stats(tmp_path):
     """No stats.dat, or one whose last row is being written (a live run):
     the concentration history alone, no rates."""
-    import channel
-    regime = script("channelRegimeAnalysis")
-    p = channel.preset("smoke")
+    settings = script("channel.case.settings")
+    regime = script("channel.regime.analysis")
+    p = settings.preset("smoke")
     write_dispersion(p, tmp_path, with_stats=False)
     h = regime.dispersion_history(p, tmp_path)
     assert len(h) == 2 and not any("fColScaled" in x for x in h)
@@ -155,12 +155,12 @@ def test_progress_of_an_unfinished_variant(tmp_path):
     of the dispersion folder comes with it, and once the dispersion is
     done the concentration at the start of agglomeration. A variant with
     no folder has no progress."""
-    import channel
-    regime = script("channelRegimeAnalysis")
-    p = channel.preset("regime64")
+    settings = script("channel.case.settings")
+    regime = script("channel.regime.analysis")
+    p = settings.preset("regime64")
     base = tmp_path / "regime64"
     un = base / "unladen"
-    tu = channel.end_time(p, "unladen")
+    tu = settings.end_time(p, "unladen")
     write_time(un, 0.0)
     write_time(un, tu)
     (un / "done.unladen").write_text("1\n")
@@ -191,7 +191,7 @@ def test_progress_of_an_unfinished_variant(tmp_path):
     (disp / "done.dispersion").write_text("1\n")
     g = regime.progress("regime64", tmp_path)
     assert g["concentration"]["nearWallOverCentre"] == pytest.approx(7 / 3)
-    report = script("channelRegimeReport")
+    report = script("channel.regime.report")
     text = "\n".join(report._agglomeration_lines(
         {"variants": [{"name": "regime64", "result": None, "progress": g}]}))
     assert "regime64       c_w/c_0 at the start of agglomeration (the " \
@@ -203,7 +203,7 @@ def test_stage_times_count_every_resumed_segment(tmp_path):
     again) on 2 ranks and a serial stage: each folder's wall-clock is the
     sum of its segments' last ClockTime, the CPU the sum of the last
     ExecutionTimes times the ranks (hand sums)."""
-    regime = script("channelRegimeAnalysis")
+    regime = script("channel.regime.analysis")
 
     def log(d, segments, ranks=1):
         d.mkdir(parents=True)
@@ -231,8 +231,8 @@ def write_agglomeration(p, case, cloud, Tmax, col_rate, agg_rate):
     """stats.dat of one cloud of an agglomeration stage: a row per T*agg
     0, 1, ..., Tmax with nCol = col_rate T*agg and nAgg = agg_rate
     T*agg (steady rates)."""
-    import channel
-    t0 = channel.end_time(p, "dispersion")
+    settings = script("channel.case.settings")
+    t0 = settings.end_time(p, "dispersion")
     d = case / "postProcessing" / f"{cloud}HardSphere" / f"{t0:.12g}"
     d.mkdir(parents=True)
     rows = [f"{t0 + T * p['tScale']:.17g} {col_rate * T:g} {agg_rate * T:g}"
@@ -249,9 +249,9 @@ def test_agglomeration_stage_so_far(tmp_path):
     0.1 per T* (steady: batch means 0, so the Poisson sigma sqrt(100) /
     50), times s^2 = 3600; alpha_f 0.05. MAM has no stats.dat: left out.
     Cut at T*agg 105 the window's part (5 T*) is too short for rates."""
-    import channel
-    regime = script("channelRegimeAnalysis")
-    p = channel.preset("regime64")
+    settings = script("channel.case.settings")
+    regime = script("channel.regime.analysis")
+    p = settings.preset("regime64")
     adir = tmp_path / "agg"
     t0 = write_agglomeration(p, adir, "EAM", 160, 2.0, 0.1)
     T0 = t0 / p["tScale"]
@@ -270,7 +270,7 @@ def test_agglomeration_stage_so_far(tmp_path):
     early = regime.agglomeration_so_far(p, adir, T0 + 105)["EAM"]
     assert early["TstarAgg"] == pytest.approx(105)
     assert "window" not in early and "f_col_scaled" not in early
-    report = script("channelRegimeReport")
+    report = script("channel.regime.report")
     res = {"variants": [
         {"name": "regime64", "result": None,
          "progress": {"agglomeration": x}},
@@ -290,7 +290,7 @@ def test_contacts_by_wall_distance():
     centre, in the last bin), agglomerating the 2nd, 4th and 5th: per bin
     by hand 2/1, 1/0, 0, 0, 1/1, 2/1; the medians of |u_n| (m/s in, mm/s
     out) 15, 30, -, -, 2, 1.5."""
-    regime = script("channelRegimeAnalysis")
+    regime = script("channel.regime.analysis")
     un = np.array([0.010, 0.020, 0.030, 0.002, 0.001, 0.002])
     yw = np.array([0.01, 0.01, 0.03, 0.3, 0.7, 1.0])
     agg = np.array([False, True, False, True, True, False])
@@ -307,18 +307,18 @@ def test_post_refuses_a_wrong_runs_folder(tmp_path):
     runs, stops before writing (it exited 0 and rewrote the committed
     regime.json with 'not run' rows, 95 KB -> 2.5 KB); without
     --reference it writes beside the runs, not into results/regime."""
-    regime = script("channelRegime")
-    committed = regime.HERE / "results" / "regime"
+    regime = script("channel.regime.study")
+    committed = regime.TUTORIAL / "results" / "regime"
     before = {f: (committed / f).read_bytes()
               for f in ("regime.json", "regime.txt", "regime.png")}
     for runs in (tmp_path / "missing", tmp_path):
         with pytest.raises(SystemExit) as e:
-            regime.main(["channelRegime.py", "post", "--runs", str(runs)])
+            regime.main(["channel.regime", "post", "--runs", str(runs)])
         assert str(runs) in str(e.value)
     assert not (tmp_path / "report-regime").exists()
     assert {f: (committed / f).read_bytes() for f in before} == before
     assert regime.post_folder(tmp_path) == tmp_path / "report-regime"
     assert regime.post_folder(tmp_path, reference=True) == committed
     with pytest.raises(SystemExit):               # one place or the other
-        regime.main(["channelRegime.py", "post", "--reference", "--out",
+        regime.main(["channel.regime", "post", "--reference", "--out",
                      str(tmp_path)])

@@ -1,5 +1,5 @@
 """What the paper's regime needs by the regime study's grid trend
-(channelRegimeNeeds.py): where each fitted power law lies within the
+(channel.regime.needs): where each fitted power law lies within the
 verdict's factor, the 68 % range of its entry against a brute-force scan
 of the fit's band, the grid range of all four and the cost law through
 the grid variants' hours."""
@@ -14,13 +14,13 @@ from channelTestRuns import script
 
 @pytest.fixture(scope="module")
 def nd():
-    return script("channelRegimeNeeds")
+    return script("channel.regime.needs")
 
 
 def fitted(nd, n, v, rel, paper):
     """The trend module's fit of v(n) with relative sigma rel, and the
     paper's value."""
-    trend = script("channelRegimeTrend")
+    trend = script("channel.regime.trend")
     f = trend.power_law(n, v, rel * np.asarray(v, float))
     f["paper"] = paper
     return f

@@ -1,4 +1,4 @@
-"""The regime study's variants one shortcut apart (channelRegimePairs.py):
+"""The regime study's variants one shortcut apart (channel.regime.pairs):
 the ratio of a variant's scaled frequencies to its base's, its standard
 error by propagation, the verdict on the shortcut, the pairs of the
 checks (particle number, phase lengths) and their derivation from the
@@ -13,7 +13,7 @@ from channelTestRuns import script
 
 @pytest.fixture(scope="module")
 def pairs():
-    return script("channelRegimePairs")
+    return script("channel.regime.pairs")
 
 
 def model(fcol, scol, fagg, sagg):
@@ -129,7 +129,7 @@ def test_pairs_derived_from_the_presets(pairs):
     assert pairs.check_pairs("particleNumber", names) == [
         ("regime48n3", "regime48")]
     assert pairs.check_pairs("wallNormal", names) == []
-    channel = script("channel")
+    channel = script("channel.case.settings")
     a, b = channel.preset("regime32"), channel.preset("small")
     assert {"UTolerance", "writeStar"} <= {
         k for k in a if a[k] != b.get(k)}

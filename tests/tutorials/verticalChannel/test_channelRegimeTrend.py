@@ -1,4 +1,4 @@
-"""The regime study's grid trend (channelRegimeTrend.py): the weighted
+"""The regime study's grid trend (channel.regime.trend): the weighted
 power-law fit and its extrapolation to 128^3 against closed forms of
 least squares in ln v."""
 
@@ -12,7 +12,7 @@ from channelTestRuns import script
 
 @pytest.fixture(scope="module")
 def trend():
-    return script("channelRegimeTrend")
+    return script("channel.regime.trend")
 
 
 def test_exact_power_law_three_points(trend):
@@ -158,7 +158,7 @@ def test_grid_variants_derived_from_the_presets():
     the cells (the same in every direction), their grading and the step
     from regime32: 32, 48, 64; not regime64short (other phases), not
     printed (the cells across only), not the 3e5-particle variants."""
-    trend = script("channelRegimeTrend")
+    trend = script("channel.regime.trend")
     assert trend.GRID_VARIANTS == (("regime32", 32), ("regime48", 48),
                                    ("regime64", 64))
     assert trend.grid_variants("regime32n3") == (("regime32n3", 32),

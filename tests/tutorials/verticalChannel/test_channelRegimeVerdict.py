@@ -1,4 +1,4 @@
-"""The regime study's verdict (channelRegimeVerdict.py): which finished
+"""The regime study's verdict (channel.regime.verdict): which finished
 variant is in the paper's regime (both models' f_col x s^2 and alpha_f
 within a factor 2 of Table 3's C1), the cheapest affordable one (C1 on 2
 cores, CPU hours / 2, at most 3 h), else the closest and where the grid
@@ -13,7 +13,7 @@ from channelTestRuns import script
 
 @pytest.fixture(scope="module")
 def vd():
-    return script("channelRegimeVerdict")
+    return script("channel.regime.verdict")
 
 
 def variant(name, col, alpha, cpu_h, mam=None):
@@ -89,7 +89,7 @@ def test_none_in_the_regime_the_closest_and_the_trend(vd):
     assert "worst factor 6 (MAM alpha_f)" in text
     assert ("EAM f_col x s^2 within; EAM alpha_f overlaps; MAM f_col x "
             "s^2 outside; MAM alpha_f n/r") in text
-    # What the regime needs follows (channelRegimeNeeds): EAM f_col x s^2
+    # What the regime needs follows (channel.regime.needs): EAM f_col x s^2
     # (v = n sqrt(90) / 128) lies within [5, 20] for n 67.5-270
     assert "what the regime needs, from the grid trend" in text
     assert "EAM f_col x s^2: within for n 67.5-270" in text

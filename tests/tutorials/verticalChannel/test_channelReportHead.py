@@ -1,16 +1,16 @@
 """tutorials/verticalChannel: the report's head computed from the run's own
-numbers (channelReport.resolves: sim/paper factors against Table D.6,
+numbers (channel.post.report.resolves: sim/paper factors against Table D.6,
 the share of the window's contacts at the walls, the verdict by the
 regime study's factor 2), the near-wall share of a window's contacts
-(channelContacts), and the comparison's line on the ranks of the run and
+(channel.post.contacts), and the comparison's line on the ranks of the run and
 of the reference."""
 import numpy as np
 import pytest
 
 from channelTestRuns import script
 
-reg = script("channelReport")
-contacts = script("channelContacts")
+reg = script("channel.post.report")
+contacts = script("channel.post.contacts")
 D6 = reg.TABLE_D6["C1"]
 
 

@@ -12,7 +12,7 @@ from channelTestRuns import script
 
 
 def test_vtk_written_again_after_a_cut(raised_digits, case_dir):
-    runs = script("channelRuns")
+    runs = script("channel.case.runs")
     case = case_dir / "vtk"
     shutil.copytree(raised_digits, case)
     (case / "VTK").mkdir()

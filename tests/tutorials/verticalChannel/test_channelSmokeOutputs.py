@@ -21,7 +21,7 @@ def test_picture_without_legacy_positions(smoke_runs, tmp_path, capsys):
     """A run that writes no legacy positions (the paper preset) still gets
     its particle picture, drawn from the barycentric coordinates and the
     mesh at the same places; a run with neither file is named."""
-    post = script("channelPost")
+    post = script("channel.post.postprocess")
     src = agg_runs(smoke_runs[1])[("C1", "EAM")]
     adir = tmp_path / "agglomeration"
     shutil.copytree(src, adir, ignore=shutil.ignore_patterns(
@@ -32,7 +32,7 @@ def test_picture_without_legacy_positions(smoke_runs, tmp_path, capsys):
     pos.unlink()
     x = cloud.cloud_positions(adir, t.name, "EAM")
     assert np.abs(x - x_legacy).max() < 1e-12
-    p = post.channel.preset("smoke")
+    p = post.settings.preset("smoke")
     png = post.picture(tmp_path, p, {("C1", "EAM"): (adir, "EAM")})
     assert png is not None and png.stat().st_size > 10000
     (t / "lagrangian" / "EAM" / "coordinates").unlink()
@@ -41,13 +41,13 @@ def test_picture_without_legacy_positions(smoke_runs, tmp_path, capsys):
 
 
 def test_regime_study_post(smoke_runs, tmp_path):
-    """The regime study's post-processing (channelRegime.py) on the smoke
+    """The regime study's post-processing (channel.regime) on the smoke
     runs: the contacts it reads from the event log add up to the
     statistics' counters (first, repeat and agglomerating contacts of the
     window), the particle concentration at the start of agglomeration is
     that of the uniform release (near-wall over centre within 3 sigma of
     1, Poisson), and a variant not run is reported as such, not guessed."""
-    regime = script("channelRegime")
+    regime = script("channel.regime.study")
     runs = smoke_runs[2] / "runs"
     res = regime.run_post(runs, tmp_path, ["smoke", "regime32"])
     smoke, missing = res["variants"]
@@ -89,7 +89,7 @@ def test_report_head_factors_and_comparison(smoke_runs):
     the comparison with another report weighs each value against both
     sigmas: the serial and 2-rank C1 runs (no random numbers) agree
     exactly (z = 0), and nothing differs beyond 3 sigma."""
-    post = script("channelPost")
+    post = script("channel.post.postprocess")
     rep = {n: smoke_runs[n] / "runs" / "smoke" / "report" for n in (1, 2)}
     lines = (rep[2] / "regression.txt").read_text().splitlines()
     assert lines[0].startswith("What preset smoke resolves: nothing of")
@@ -123,9 +123,9 @@ def test_regime_post_keeps_earlier_results(smoke_runs, tmp_path):
     runs were lost with a machine; its committed numbers stand), and is
     compared with the variants run since; without --earlier it is 'not
     run'."""
-    regime = script("channelRegime")
+    regime = script("channel.regime.study")
     runs = smoke_runs[2] / "runs"
-    committed = regime.HERE / "results" / "regime" / "regime.json"
+    committed = regime.TUTORIAL / "results" / "regime" / "regime.json"
     before = json.loads(committed.read_text())
     old64 = [v for v in before["variants"] if v["name"] == "regime64"][0]
     res = regime.run_post(runs, tmp_path, ["smoke", "regime64", "printed"],
@@ -147,8 +147,8 @@ def test_matrix_figure(smoke_runs, tmp_path):
     """matrix.png: each run's f_col x s^2, f_agg x s^2 and alpha_f with
     its sigma beside Table D.6's values, as the report's summary has
     them (C1 and C2 of the 2-rank smoke runs)."""
-    mp = script("channelMatrixPlot")
-    channel = script("channel")
+    mp = script("channel.plots.matrix")
+    channel = script("channel.case.settings")
     summary = json.loads((smoke_runs[2] / "runs" / "smoke" / "report"
                           / "summary.json").read_text())
     assert (smoke_runs[2] / "runs" / "smoke" / "report"

@@ -1,5 +1,5 @@
 """The paper's comparisons judged at the preset for comparisons with the
-paper (channelStatements, through channelRegression.regression), on
+paper (channel.post.statements, through channel.post.regression), on
 runs made up here from Table D.6: an absolute row within a factor 2
 passes and one beyond fails, one with too few events is n/r; a ratio is
 judged only where its sigma is below a third of the paper's effect; each
@@ -28,7 +28,7 @@ def run(c, m, col, agg, rel=0.01):
 
 @pytest.fixture(scope="module")
 def mods():
-    return script("channelRegression"), script("channel")
+    return script("channel.post.regression"), script("channel.case.settings")
 
 
 def paper_runs(channel, factor=1.0, rel=0.01):

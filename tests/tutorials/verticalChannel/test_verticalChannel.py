@@ -78,7 +78,7 @@ def test_statistics_complete_and_consistent(smoke_runs, np_):
 
 @pytest.mark.parametrize("np_", [1, 2])
 def test_replay_of_the_event_logs(smoke_runs, np_):
-    """channelReplay.py (doc/eventLog.md): each agglomeration cloud's log
+    """channel.post.replay (doc/eventLog.md): each agglomeration cloud's log
     holds its first contacts (the statistics' count); replayed with the
     run's own kernel they agglomerate as often as the run's first
     contacts did, every logged outcome reproduced; EAM at e_n 0.97 is the
@@ -183,8 +183,8 @@ def test_restart_reproduces_the_agglomeration_stage(smoke_runs, tmp_path):
 # ----------------------------------------------------------- the release
 
 def _particles_module():
-    """channelParticles, after channel that it imports."""
-    return tutorial_module("verticalChannel", "channelParticles")
+    """channel.case.particles, with the settings module it imports."""
+    return tutorial_module("verticalChannel", "channel.case.particles")
 
 
 def _brute_overlaps(x, dmin, Lx, Lz):
@@ -251,8 +251,8 @@ def test_release_into_processors_is_the_serial_release(smoke_runs):
 def test_resumed_log_counts_each_step_once():
     """A run resumed with -append repeats the steps after its last write
     in the log: the u_tau check reads each step's gradients once, the
-    resumed run's (channelPost.step_values)."""
-    post = script("channelPost")
+    resumed run's (channel.post.postprocess.step_values)."""
+    post = script("channel.post.postprocess")
     steps = [(1, [10, 11]), (2, [20, 21]), (3, [30, 31]),     # killed
              (2, [22, 23]), (3, [32, 33]), (4, [40, 41])]     # resumed
     log = "".join(f"Time = {t}\n" + "".join(

@@ -46,6 +46,19 @@ def run(cmd, cwd, log, check=True, timeout=600):
     return res
 
 
+def package_command(folder, module, *args):
+    """The command that runs a module of the package in folder (python -m
+    module args, a tutorial's package) from any working folder: folder
+    goes first on the PYTHONPATH of this process, and so of the commands
+    it starts (once)."""
+    import sys
+    paths = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep)
+             if p]
+    if str(folder) not in paths:
+        os.environ["PYTHONPATH"] = os.pathsep.join([str(folder)] + paths)
+    return [sys.executable, "-m", module, *map(str, args)]
+
+
 def _siblings(path):
     """The scripts of the folder of the script at path that it imports
     (import statements anywhere in it, found by ast)."""
@@ -82,12 +95,38 @@ def _script_module(path, name):
     return module
 
 
-def tutorial_module(tutorial, script):
-    """A tutorial's Python script (tutorials/<tutorial>/<script>.py of the
-    project) imported as the module `script`, for the tests and benchmarks
-    that call its functions (its siblings found as it imports them)."""
-    return _script_module(
-        project_dir() / "tutorials" / tutorial / f"{script}.py", script)
+def tutorial_module(tutorial, name):
+    """A tutorial's Python module, for the tests and benchmarks that call
+    its functions: a script (tutorials/<tutorial>/<name>.py, imported as
+    the module `name`, its siblings found as it imports them) or a module
+    of the tutorial's package (a dotted name, "channel.post.report": the
+    package tutorials/<tutorial>/channel imported as `channel`, then the
+    module as Python imports it)."""
+    folder = project_dir() / "tutorials" / tutorial
+    if "." in name:
+        _package(folder / name.split(".")[0])
+        import importlib
+        return importlib.import_module(name)
+    return _script_module(folder / f"{name}.py", name)
+
+
+def _package(folder):
+    """The package in folder imported under its folder's name (kept in
+    sys.modules; its modules found in it, no search-path edit)."""
+    import importlib.util
+    import sys
+    name, init = folder.name, folder / "__init__.py"
+    if name in sys.modules and \
+            getattr(sys.modules[name], "__file__", None) == str(init):
+        return sys.modules[name]
+    if not init.is_file():
+        raise ImportError(f"{folder}: not a package (no __init__.py)")
+    spec = importlib.util.spec_from_file_location(
+        name, init, submodule_search_locations=[str(folder)])
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
 
 
 def bench_module(script):

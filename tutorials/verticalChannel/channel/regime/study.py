@@ -6,13 +6,13 @@ or the particle number. Each is a preset of the presets file, run by
 ./Allrun -preset NAME (resumable; the long ones from a clone outside the
 work tree, --runs). Nothing is tuned: every variant run is reported.
 
-    channelRegime.py list                   the variants and what each changes
-    channelRegime.py run [-np N] [-j J] [--runs DIR] [VARIANT ...]
+    channel.regime list                   the variants and what each changes
+    channel.regime run [-np N] [-j J] [--runs DIR] [VARIANT ...]
                                             ./Allrun each (default: all),
                                             J at a time (default 1; with
                                             J > 1 each one's output goes
                                             to runs/<variant>.log)
-    channelRegime.py post [--runs DIR] [--out DIR | --reference]
+    channel.regime post [--runs DIR] [--out DIR | --reference]
                           [--earlier JSON]
                                             regime.json, regime.txt,
                                             regime.png in DIR/report-regime
@@ -39,17 +39,16 @@ import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-import channel
-import channelRegimePairs as pairs
-import channelRegimeTrend as trend
-import channelRegimeVerdict as verdict
-from channelRegimeAnalysis import (MODELS, PAPER, analyse_variant, progress,
+from channel import TUTORIAL
+from channel.case import settings
+from channel.regime import pairs
+from channel.regime import trend
+from channel.regime import verdict
+from channel.regime.analysis import (MODELS, PAPER, analyse_variant, progress,
                                    runs_base)
-from channelRegimePlots import plots
-from channelRegimeReport import table
-from channelRegimeVariants import VARIANTS
-
-HERE = channel.HERE
+from channel.regime.plots import plots
+from channel.regime.report import table
+from channel.regime.variants import VARIANTS
 
 
 def post_folder(runs=None, out=None, reference=False):
@@ -58,8 +57,8 @@ def post_folder(runs=None, out=None, reference=False):
     if out:
         return Path(out)
     if reference:
-        return HERE / "results" / "regime"
-    return Path(runs or HERE / "runs") / "report-regime"
+        return TUTORIAL / "results" / "regime"
+    return Path(runs or TUTORIAL / "runs") / "report-regime"
 
 
 def earlier_results(path):
@@ -68,7 +67,7 @@ def earlier_results(path):
     try:
         old = json.loads(Path(path).read_text())
     except (OSError, ValueError) as e:
-        raise SystemExit(f"channelRegime.py post: --earlier {path}: {e}")
+        raise SystemExit(f"channel.regime post: --earlier {path}: {e}")
     return {v["name"]: v["result"] for v in old.get("variants", [])
             if v.get("result")}
 
@@ -81,11 +80,11 @@ def run_post(runs=None, out=None, names=None, reference=False,
     were measured), so that a variant run later is compared with those
     run before."""
     kept = earlier_results(earlier) if earlier else {}
-    runs_dir = Path(runs or HERE / "runs")
+    runs_dir = Path(runs or TUTORIAL / "runs")
     if not runs_dir.is_dir():
-        raise SystemExit(f"channelRegime.py post: no folder {runs_dir}")
+        raise SystemExit(f"channel.regime post: no folder {runs_dir}")
     if not any(runs_base(runs, n).is_dir() for n in names or dict(VARIANTS)):
-        raise SystemExit(f"channelRegime.py post: no variant has run under "
+        raise SystemExit(f"channel.regime post: no variant has run under "
                          f"{runs_dir} (runs/<variant> of: "
                          f"{' '.join(names or dict(VARIANTS))}); nothing "
                          "written")
@@ -133,12 +132,12 @@ def run_variants(names, nprocs, jobs):
     def one(n):
         cmd = ["./Allrun", "-preset", n, "-np", str(nprocs)]
         if jobs == 1:
-            return subprocess.call(cmd, cwd=HERE)
-        log = HERE / "runs" / f"{n}.log"
+            return subprocess.call(cmd, cwd=TUTORIAL)
+        log = TUTORIAL / "runs" / f"{n}.log"
         log.parent.mkdir(parents=True, exist_ok=True)
         with open(log, "a") as f:
             print(f"{n}: running, output in {log}", flush=True)
-            rc = subprocess.call(cmd, cwd=HERE, stdout=f,
+            rc = subprocess.call(cmd, cwd=TUTORIAL, stdout=f,
                                  stderr=subprocess.STDOUT)
         print(f"{n}: {'finished' if rc == 0 else f'failed ({rc})'}",
               flush=True)
@@ -150,7 +149,7 @@ def run_variants(names, nprocs, jobs):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(prog="channelRegime.py",
+    ap = argparse.ArgumentParser(prog="channel.regime",
                                  description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
     sub.add_parser("list")
@@ -179,7 +178,7 @@ def main(argv):
         for n, what in VARIANTS:
             print(f"{n:14s} {what}")
     elif a.cmd == "run":
-        if a.runs and Path(a.runs).resolve() != (HERE / "runs").resolve():
+        if a.runs and Path(a.runs).resolve() != (TUTORIAL / "runs").resolve():
             ap.error("run: the runs go to this tutorial's runs/; run the "
                      "study from a clone outside the work tree instead")
         return run_variants(a.variants or known, a.np, a.j)
@@ -188,6 +187,3 @@ def main(argv):
                  a.earlier)
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))

@@ -4,7 +4,7 @@ differ (shortcut); channelRegime runs and posts them, channelRegimePairs
 and channelRegimeTrend derive from their presets which pairs are one
 shortcut apart and which variants refine the grid alone."""
 
-import channel
+from channel.case import settings
 
 
 #: The variants, in order: name (= preset), what it changes from `small`
@@ -30,12 +30,12 @@ NOT_A_SHORTCUT = {"deltaT", "writeStar", "UTolerance"}
 
 def shortcut(a, b):
     """The entries in which presets a and b differ (settings dicts of
-    channel.preset), but NOT_A_SHORTCUT."""
+    settings.preset), but NOT_A_SHORTCUT."""
     keys = (set(a) | set(b)) - NOT_A_SHORTCUT - {"name"}
     return {k for k in keys if a.get(k) != b.get(k)}
 
 
 def presets(names=None):
     """The settings of the presets names (default: every variant's)."""
-    return {n: channel.preset(n)
+    return {n: settings.preset(n)
             for n in names or [n for n, _ in VARIANTS]}

@@ -1,18 +1,18 @@
 """verticalChannel: the report's text (its head computed from the run's
 own numbers: what it resolves, where its collisions are, how far from the
-paper; the regression table of channelRegression.py) and its comparison
+paper; the regression table of channel.post.regression) and its comparison
 with the committed reference (which runs each is, every row against the
 reference's with both sigmas)."""
 
 import json
 import math
 
-import channel
-import channelContacts as contacts
+from channel.case import settings
+from channel.post import contacts
 from aggloTools import regression as reg
-from channelStatements import PAPER_REGIME
+from channel.post.statements import PAPER_REGIME
 
-TABLE_D6 = channel.TABLE_D6
+TABLE_D6 = settings.TABLE_D6
 
 
 def fmt(v):
@@ -116,7 +116,7 @@ def write_regression(path, p, rows, fluid, res):
              f" N = {p['nParticles']:g} per cloud, frequencies by Eq. 87"
              f" over T*agg = {p['window'][0]:g}-{p['window'][1]:g},",
              f"scaled to the paper by s^2 = (6e6/N)^2 ="
-             f" {(channel.N_PAPER / p['nParticles'])**2:g};"
+             f" {(settings.N_PAPER / p['nParticles'])**2:g};"
              " ratios pass if |sim - paper| <= max(3 sigma, 15 % paper)"
              " (doc/cases.md A.9), sigma from batch means",
              "(10 sub-windows) or Poisson, whichever is larger."

@@ -1,15 +1,14 @@
-#!/usr/bin/env python3
 """verticalChannel: the particles of a stage's case (doc/cases.md A.1,
 A.11).
 
-    channelParticles.py release CASE
+    channel.case.particles release CASE
                         the particles of the case's configuration at its
                         latest time: seeded uniform random non-overlapping
                         positions at least d/2 from the walls, the local
                         fluid velocity, no spin, ids 0..N-1; into the
                         processor folders of a decomposed case (no
                         decomposePar)
-    channelParticles.py seedPairs CASE CLOUD ...
+    channel.case.particles seedPairs CASE CLOUD ...
                         the seeded pairs of the smoke preset at the latest
                         time
 
@@ -25,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-import channel
+from channel.case import settings
 from aggloTools import cloud, fields, placement, times
 
 
@@ -65,14 +64,14 @@ def place(N, dp, L, rng):
                                (Lx, Ly - dp / 2 * 1.001, Lz),
                                (Lx, None, Lz), rng)
     except RuntimeError as e:
-        sys.exit(f"channelParticles.py release: {e}")
+        sys.exit(f"channel.case.particles release: {e}")
 
 
 def mesh_lines(case):
     """The face coordinates along x, y and z of the one-block blockMesh
     grid (points ordered x fastest, then y, z)."""
     pts = cloud.read_lagrangian(Path(case) / "constant/polyMesh/points")
-    s = channel.read_settings(case)
+    s = settings.read_settings(case)
     nx, ny = int(s["nx"]), int(s["ny"])
     return (pts[:nx + 1, 0], pts[:(nx + 1) * (ny + 1):nx + 1, 1],
             pts[::(nx + 1) * (ny + 1), 2])
@@ -94,12 +93,12 @@ def release(case, time=None):
     through decomposePar). A particle starts with the fluid velocity of
     the cell whose centre is nearest along each axis."""
     case = Path(case)
-    s = channel.read_settings(case)
-    p = channel.preset(s["preset"])
-    c = channel.configuration(s["configuration"])
+    s = settings.read_settings(case)
+    p = settings.preset(s["preset"])
+    c = settings.configuration(s["configuration"])
     if time is None:
         time = times.time_dirs(case)[-1].name
-    C = channel.cell_centres(case, time)
+    C = settings.cell_centres(case, time)
     grid = Grid(C, p["n"])
     U = fields.read_internal(case / time / "U")
     N, dp = int(p["nParticles"]), float(c["d"])
@@ -179,15 +178,15 @@ def seed_pairs(case, clouds):
     run). Ids continue after the released particles. The cloud is
     rewritten with the legacy positions file (located on reading)."""
     case = Path(case)
-    s = channel.read_settings(case)
-    p = channel.preset(s["preset"])
+    s = settings.read_settings(case)
+    p = settings.preset(s["preset"])
     n_pairs = int(p.get("seededPairs", 0))
     if not n_pairs:
         return
     time = times.time_dirs(case)[-1].name
-    grid = Grid(channel.cell_centres(case, time), p["n"])
+    grid = Grid(settings.cell_centres(case, time), p["n"])
     Uf = fields.read_internal(case / time / "U")
-    dp = float(channel.configuration(s["configuration"])["d"])
+    dp = float(settings.configuration(s["configuration"])["d"])
     Lx, Ly, Lz = p["L"]
     d = p["delta"]
     rng = np.random.default_rng(int(p["seed"]) + 2000)
@@ -231,7 +230,7 @@ def seed_pairs(case, clouds):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="channelParticles.py", description=__doc__.split("\n\n")[0],
+        prog="channel.case.particles", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
     r = sub.add_parser("release", help="the configuration's particles at "

@@ -7,11 +7,11 @@ values: the simulation only)."""
 
 import math
 
-import channel
+from channel.case import settings
 
 #: The order of the configurations on the axis
 ORDER = ("C1", "C2", "C3", "C4", "R80", "R60")
-MODELS = channel.MODELS
+MODELS = settings.MODELS
 #: The panels: the quantity's key, its axis label
 PANELS = (("col", r"$f_{col}\,s^2$ [1/T*]"),
           ("agg", r"$f_{agg}\,s^2$ [1/T*]"),
@@ -24,7 +24,7 @@ def points(res):
     propagated; the paper's None where Table D.6 has none)."""
     out = {q: {m: [] for m in MODELS} for q, _ in PANELS}
     for c in ORDER:
-        ref = channel.TABLE_D6.get(c)
+        ref = settings.TABLE_D6.get(c)
         for m in MODELS:
             r = res.get((c, m))
             if not r:

@@ -1,8 +1,8 @@
 """verticalChannel post-processing: frequencies by Eq. 87 of each run,
-then the Table D.6 regression (channelRegression.py), the report's text
-(channelReport.py), plots and the particle picture (channelPlots.py).
+then the Table D.6 regression (channel.post.regression), the report's text
+(channel.post.report), plots and the particle picture (channel.plots.profiles).
 
-    channelPost.py PRESET [--reference]
+    channel.post PRESET [--reference]
         the report runs/PRESET/report: summary.json, regression.txt,
         plots, comparison.txt (against the committed reference
         results/PRESET); --reference writes the reference itself
@@ -20,16 +20,16 @@ from pathlib import Path
 
 import numpy as np
 
-import channel
-import channelContacts as contacts
+from channel import TUTORIAL
+from channel.case import settings
+from channel.post import contacts
 from aggloTools.stats import read_stats
 from aggloTools.uncertainty import window_rate
-from channelMatrixPlot import matrix_figure
-from channelPlots import picture, plots  # noqa: F401 (channelPost.picture)
-from channelRegression import regression
-from channelReport import compare, write_regression
-
-HERE = channel.HERE
+from channel.plots.matrix import matrix_figure
+# picture: postprocess.picture for the callers of the report
+from channel.plots.profiles import picture, plots  # noqa: F401
+from channel.post.regression import regression
+from channel.post.report import compare, write_regression
 
 
 # ------------------------------------------------------------------ runs
@@ -37,7 +37,7 @@ HERE = channel.HERE
 def run_dirs(pname, base=None):
     """(config, model) -> (case directory, cloud name) of the finished
     agglomeration stages of a preset (under runs/PRESET, or base)."""
-    base = Path(base) if base else HERE / "runs" / pname
+    base = Path(base) if base else TUTORIAL / "runs" / pname
     out = {}
     if not base.exists():
         return out
@@ -45,7 +45,7 @@ def run_dirs(pname, base=None):
         for adir in sorted(cdir.glob("agglomeration*")):
             if not (adir / "done.agglomeration").exists():
                 continue
-            s = channel.read_settings(adir)
+            s = settings.read_settings(adir)
             clouds = [str(c).strip("()") for c in
                       (s["clouds"] if isinstance(s["clouds"], list)
                        else [s["clouds"]])]
@@ -57,14 +57,14 @@ def run_dirs(pname, base=None):
 
 def analyse_run(p, adir, cloud):
     st = read_stats(adir, cloud)
-    t0 = channel.end_time(p, "dispersion")
+    t0 = settings.end_time(p, "dispersion")
     T = (st["Time"] - t0) / p["tScale"]
     T = np.concatenate(([0.0], T))
     w0, w1 = p["window"]
     # the case relative to the tutorial, or absolute when the runs are
     # kept elsewhere (a clone outside the work tree)
     try:
-        case = str(adir.relative_to(HERE))
+        case = str(adir.relative_to(TUTORIAL))
     except ValueError:
         case = str(adir)
     r = {"case": case, "cloud": cloud}
@@ -83,7 +83,7 @@ def analyse_run(p, adir, cloud):
     r["alpha_f"] = r["f_agg"] / r["f_col"] if r["f_col"] > 0 else None
     r["alpha_end"] = (r["N_agg_end"] / r["N_col_end"]
                       if r["N_col_end"] > 0 else None)
-    s2 = (channel.N_PAPER / p["nParticles"])**2
+    s2 = (settings.N_PAPER / p["nParticles"])**2
     r["scale"] = s2
     r["f_col_scaled"] = r["f_col"] * s2
     r["f_agg_scaled"] = r["f_agg"] * s2
@@ -145,22 +145,22 @@ def u_tau(p, case):
 # ------------------------------------------------------------------ post
 
 def post(pname, reference=False):
-    p = channel.preset(pname)
+    p = settings.preset(pname)
     runs = run_dirs(pname)
-    out = channel.report_dir(pname, reference)
+    out = settings.report_dir(pname, reference)
     if not runs:
-        print(f"channelPost.py: no finished runs under runs/{pname}: "
+        print(f"channel.post: no finished runs under runs/{pname}: "
               "nothing written")
         return 1
     out.mkdir(parents=True, exist_ok=True)
     fluid = {}
-    ut, G = u_tau(p, HERE / "runs" / pname / "unladen")
+    ut, G = u_tau(p, TUTORIAL / "runs" / pname / "unladen")
     if ut:
         fluid["unladen"] = {"uTauByUb": ut / p["Ubar"], "gradient": G}
     res = {}
     for k, (adir, cloud) in runs.items():
         res[k] = analyse_run(p, adir, cloud)
-        res[k]["nProcs"] = int(channel.read_settings(adir)["nProcs"])
+        res[k]["nProcs"] = int(settings.read_settings(adir)["nProcs"])
         cd = contacts.contact_distributions(adir, cloud, p, *p["window"])
         share, sigma = contacts.near_wall_share(cd)
         res[k]["nearWallShare"], res[k]["nearWallSigma"] = share, sigma
@@ -175,7 +175,7 @@ def post(pname, reference=False):
         "preset": pname,
         "nParticles": p["nParticles"],
         "window": p["window"],
-        "scale_s2": (channel.N_PAPER / p["nParticles"])**2,
+        "scale_s2": (settings.N_PAPER / p["nParticles"])**2,
         "fluid": fluid,
         "runs": {f"{c} {m}": {k: v for k, v in r.items()
                               if not k.startswith("_")}
@@ -188,7 +188,7 @@ def post(pname, reference=False):
     picture(out, p, runs)
     print((out / "regression.txt").read_text())
     if not reference:
-        text = compare(rows, channel.report_dir(pname, True)
+        text = compare(rows, settings.report_dir(pname, True)
                        / "summary.json", summary["runs"])
         (out / "comparison.txt").write_text(text + "\n")
         print(text.splitlines()[-1])
@@ -197,7 +197,7 @@ def post(pname, reference=False):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="channelPost.py", description=__doc__.split("\n\n")[0],
+        prog="channel.post", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("preset", help="the preset whose runs/PRESET is "
                     "post-processed")
@@ -206,12 +206,9 @@ def main(argv):
                     "instead of runs/PRESET/report")
     a = ap.parse_args(argv)
     try:
-        channel.preset(a.preset)
+        settings.preset(a.preset)
     except SystemExit as e:
         sys.stderr.write(f"{e}\n")
         return 1
     return post(a.preset, a.reference)
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

@@ -20,14 +20,14 @@ value, and all four, lie within the factor, and the cost of a C1 there
 (also where variants are in the regime but none is affordable: where
 the trend enters the regime is the cheapest grid it points to);
 with three grids, the same read off the finest two grids' law too
-(channelRegimeTrend.finest_pair). The printed resolution (PRINTED, the
+(trend.finest_pair). The printed resolution (PRINTED, the
 wall-normal grid the paper prints over PRINTED_BASE) is judged against
 factors 2 and 1.5, and its worst factor against its base's says which
 grid the Table D.6 matrix belongs on."""
 
 import math
 
-import channelRegimeNeeds as needs
+from channel.regime import needs
 
 #: Largest factor to the paper of each of the four values
 FACTOR = 2.0

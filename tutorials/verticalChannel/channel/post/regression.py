@@ -1,18 +1,18 @@
 """verticalChannel: the Table D.6 regression of a preset's runs: the rows,
 their PASS / FAIL / n/r by the tolerances of doc/cases.md A.9
-(channelReport.py writes them as the report's text). The runs' values
-come from channelPost.analyse_run."""
+(channel.post.report writes them as the report's text). The runs' values
+come from postprocess.analyse_run."""
 
 
-import channel
-import channelStatements as statements
+from channel.case import settings
+from channel.post import statements
 from aggloTools import regression as reg
 from aggloTools import uncertainty as unc
 from aggloTools.uncertainty import ratio
-from channelStatements import PAPER_REGIME
+from channel.post.statements import PAPER_REGIME
 
-# AB16 Tab. D.6 (channel.py)
-TABLE_D6 = channel.TABLE_D6
+# AB16 Tab. D.6 (channel.case.settings)
+TABLE_D6 = settings.TABLE_D6
 # Case ratios (doc/cases.md A.9): numerator, denominator, what it tests
 RATIOS = (("C2", "C1", "with/without sub-models"),
           ("C3", "C2", "rough/smooth wall"),

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """verticalChannel: the paper's downward turbulent channel flow with
 four-way coupled 12/4 um quartz particles (doc/cases.md Part A).
 
@@ -31,12 +30,12 @@ Stages, each a run of aggloPimpleFoam under runs/<preset>/:
   <config>/agglomeration-EAM/, -MAM/   one run per model (two-way)
 A stage that is interrupted continues from its last written time when
 Allrun is called again; finished stages are kept (remove runs/<preset>
-to redo). Then channelPost.py writes the report runs/<preset>/report/:
+to redo). Then channel.post writes the report runs/<preset>/report/:
 summary.json, regression.txt (printed), plots, a pyvista picture and
 comparison.txt (against the committed reference results/<preset>/,
 which only -reference rewrites); the VTK files of
 the last time are under runs/<preset>/<config>/.../VTK (foamToVTK);
-channelReplay.py replays the agglomeration stages' collision-event logs
+channel.post.replay replays the agglomeration stages' collision-event logs
 (replay.json, replay.txt, alphaReplay<config><cloud>.png).
 Ctrl-C stops every run it started (exit status 130).
 Run times on the 2-core development machine: README.md.
@@ -51,12 +50,12 @@ import time
 from pathlib import Path
 
 from aggloTools import runtimes, stages, times
-from aggloTools.runner import CommandError
+from aggloTools.runner import CommandError, package_command
 
-import channel
-import channelParticles
+from channel import TUTORIAL
+from channel.case import settings
+from channel.case import particles
 
-HERE = Path(__file__).resolve().parent
 MATRIX = "C1 C2 C3 C4 R80 R60"
 
 
@@ -86,11 +85,12 @@ class Channel:
 
     def settings(self, d, config, stage, models=()):
         (d / "system" / "caseSettings").write_text(
-            channel.settings(self.a.preset, config, stage, tuple(models),
+            settings.settings(self.a.preset, config, stage, tuple(models),
                              self.a.np))
 
-    def python(self, d, suffix, script, *args):
-        stages.run_logged([sys.executable, HERE / script, *args],
+    def python(self, d, suffix, module, *args):
+        """python -m module args in the case d, logged (log.python.*)."""
+        stages.run_logged(package_command(TUTORIAL, module, *args),
                           d, f"log.python.{suffix}")
 
     def stage(self, d, stage, config, models=()):
@@ -120,7 +120,7 @@ class Channel:
         if np > 1:
             cmd = ["mpirun", "-n", str(np), "aggloPimpleFoam", "-parallel"]
         try:
-            wall = stages.run_solver(d, cmd, tag, channel.progress,
+            wall = stages.run_solver(d, cmd, tag, settings.progress,
                                      self.a.every, append=True)
         except CommandError:
             raise CommandError(f"aggloPimpleFoam failed, see "
@@ -145,7 +145,7 @@ class Channel:
             stages.run_logged(["blockMesh"], d, "log.blockMesh")
             stages.run_logged(["postProcess", "-func", "writeCellCentres",
                                "-time", "0"], d, "log.postProcess")
-            self.python(d, "init", "channel.py", "init", ".")
+            self.python(d, "init", "channel.case", "init", ".")
         self.stage(d, "unladen", "C1")
 
     def configuration(self, c):
@@ -162,14 +162,14 @@ class Channel:
             # folders: the fluid is decomposed first, if not copied so
             if np > 1 and not stages.decomposed(d):
                 stages.decompose(d)
-            self.python(d, "release", "channelParticles.py", "release",
+            self.python(d, "release", "channel.case.particles", "release",
                         ".")
             (d / "released").touch()
         self.stage(d, "release", c)
         self.stage(d, "dispersion", c)
 
-        seeded = channel.preset(self.a.preset)["seededPairs"]
-        two_way = bool(channel.configuration(c)["twoWay"])
+        seeded = settings.preset(self.a.preset)["seededPairs"]
+        two_way = bool(settings.configuration(c)["twoWay"])
         for models in ((("EAM",), ("MAM",)) if two_way
                        else (("EAM", "MAM"),)):
             adir = self.base / c / ("agglomeration-" + models[0]
@@ -181,12 +181,12 @@ class Channel:
                                        extra_constant=Path("constant"))
                 # Each model's cloud starts from the same end-of-dispersion
                 # state; the counters (statistics state) start from zero
-                channelParticles.branch_clouds(adir, t, models)
+                particles.branch_clouds(adir, t, models)
                 sys.stdout.flush()
                 stages.run_logged(["postProcess", "-func",
                                    "writeCellCentres", "-time", t], adir,
                                   "log.postProcess")
-                self.python(adir, "seedPairs", "channelParticles.py",
+                self.python(adir, "seedPairs", "channel.case.particles",
                             "seedPairs", ".", *models)
                 (adir / "branched").touch()
             self.stage(adir, "agglomeration", c, models)
@@ -243,7 +243,7 @@ def work(a):
     # The preset and the configurations checked before anything starts
     try:
         for c in configs:
-            channel.settings(a.preset, c, "unladen", (), a.np)
+            settings.settings(a.preset, c, "unladen", (), a.np)
     except SystemExit as e:
         sys.stderr.write(f"{e}\n")
         return 1
@@ -258,24 +258,24 @@ def work(a):
 
     ref = ["--reference"] if a.reference else []
     print(flush=True)
-    status = subprocess.call([sys.executable, "channelPost.py", a.preset,
+    status = subprocess.call([sys.executable, "-m", "channel.post", a.preset,
                               *ref])
     # The collision-event logs replayed through EAM and MAM at three e_n
     print(flush=True)
-    if subprocess.call([sys.executable, "channelReplay.py", a.preset,
+    if subprocess.call([sys.executable, "-m", "channel.post.replay", a.preset,
                         *ref]):
         status = 1
     report = f"results/{a.preset}" if a.reference \
         else f"runs/{a.preset}/report"
     print()
-    if not (HERE / report / "regression.txt").is_file():
-        sys.stderr.write(f"Allrun: no report written ({HERE / report})\n")
+    if not (TUTORIAL / report / "regression.txt").is_file():
+        sys.stderr.write(f"Allrun: no report written ({TUTORIAL / report})\n")
         return 1
-    print(f"Report: {HERE / report}/regression.txt")
+    print(f"Report: {TUTORIAL / report}/regression.txt")
     print("        (summary.json, the plots *.png and, for a run,"
           " comparison.txt against the committed reference"
           f" results/{a.preset}, beside it);")
-    print(f"cases and VTK files: {HERE / 'runs' / a.preset}/")
+    print(f"cases and VTK files: {TUTORIAL / 'runs' / a.preset}/")
     print(run_time(a, configs, run, time.monotonic() - start))
     return status
 
@@ -286,5 +286,6 @@ def run_time(a, configs, run, seconds):
     return runtimes.line(job, seconds, run is not None and run.whole)
 
 
-if __name__ == "__main__":
-    sys.exit(stages.drive(HERE, options, work, sys.argv[1:]))
+def main(argv):
+    """The driver (python -m channel, ./Allrun) on the options argv."""
+    return stages.drive(TUTORIAL, options, work, argv)

@@ -26,9 +26,9 @@ not change it); beyond it the quantity depends on the shortcut. Per
 pair, the near-wall over centre concentration at the start of
 agglomeration of both runs (no sigma: the two values)."""
 
-import channelRegimeTrend as trend
+from channel.regime import trend
 from aggloTools import uncertainty
-from channelRegimeVariants import presets, shortcut
+from channel.regime.variants import presets, shortcut
 
 #: The checks: the preset entries each changes alone (its pairs are the
 #: variants whose presets differ in those alone and are `alike` otherwise,
@@ -103,7 +103,7 @@ def _near_wall(result):
 def check_pairs(check, names=None):
     """The pairs (variant, base) of the check among the presets names
     (default: the study's variants; in their order): those whose presets
-    differ in the check's entries alone (channelRegimeVariants.shortcut)."""
+    differ in the check's entries alone (variants.shortcut)."""
     c = CHECKS[check]
     p = presets(names)
     names = list(p)

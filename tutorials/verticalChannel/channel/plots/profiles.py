@@ -1,15 +1,15 @@
-"""verticalChannel: the report's pictures (channelPost.py writes them):
+"""verticalChannel: the report's pictures (channel.post writes them):
 time histories with the paper's rates, agglomerate sizes, wall-normal
 profiles, particle velocities and the pyvista picture of the particles."""
 
 import numpy as np
 
-import channel
+from channel import TUTORIAL
+from channel.case import settings
 from aggloTools import cloud, times, uncertainty
 from aggloTools.stats import last_output, read_table
 
-HERE = channel.HERE
-TABLE_D6 = channel.TABLE_D6
+TABLE_D6 = settings.TABLE_D6
 
 
 def read_profiles(p, adir, cloud):
@@ -51,7 +51,7 @@ def plots(out, p, res, runs):
     import matplotlib.ticker  # noqa: F401
 
     keys = sorted(res)
-    s2 = (channel.N_PAPER / p["nParticles"])**2
+    s2 = (settings.N_PAPER / p["nParticles"])**2
     w0, w1 = p["window"]
     # time histories, with the paper's rates (Table D.6, scaled to this
     # preset's particles by 1/s^2) over the window where it gives them
@@ -198,7 +198,7 @@ def profile_plots(out, p, res, runs, plt):
         sa = np.array([uncertainty.binomial_sigma(x, c) if c > 0 else np.nan
                        for x, c in zip(A, C)])
         ax[0, 2].errorbar(yc, a, yerr=np.where(C > 0, sa, np.nan), **kw)
-        dp = float(channel.read_settings(runs[k][0])["dParticle"])
+        dp = float(settings.read_settings(runs[k][0])["dParticle"])
         ax[1, 0].plot(yw, fold(t["alpha"]), color=colour, label=lab)
         ax[1, 1].plot(yw, fold(t["meanD"]) / dp - 1, color=colour,
                       label=lab)
@@ -294,6 +294,6 @@ def picture(out, p, runs):
 
 
 def res_time(p, t):
-    return (float(t.name) - channel.end_time(p, "dispersion")) / p["tScale"]
+    return (float(t.name) - settings.end_time(p, "dispersion")) / p["tScale"]
 
 

@@ -20,7 +20,7 @@ extrapolation says so."""
 import numpy as np
 
 from aggloTools import uncertainty
-from channelRegimeVariants import presets, shortcut
+from channel.regime.variants import presets, shortcut
 
 #: What a grid variant changes from the coarsest (regime32, the paper's
 #: phases): the cells in every direction, their wall grading and the step

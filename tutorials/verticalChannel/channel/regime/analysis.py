@@ -2,7 +2,7 @@
 quantities of regime.json): the rates and alpha over the window, the
 contacts' approach speeds and wall distances from the event log, the
 particle concentration across the channel and its growth, u_tau/U_B and
-the stages' times. channelRegime.py runs the variants and writes the
+the stages' times. channel.regime runs the variants and writes the
 report."""
 
 import re
@@ -10,19 +10,19 @@ from pathlib import Path
 
 import numpy as np
 
-import channel
-import channelPost as post
-from channelContacts import (QUANTILES, WALL_BINS,  # noqa: F401
+from channel import TUTORIAL
+from channel.case import settings
+from channel.post import postprocess as post
+from channel.post.contacts import (QUANTILES, WALL_BINS,  # noqa: F401
                              by_wall_distance, contact_distributions)
 from aggloTools import times, uncertainty
 from aggloTools.stats import read_stats, read_table
 
-HERE = channel.HERE
 
-MODELS = channel.MODELS
-#: AB16 Table 3 / D.6 (channel.TABLE_D6), C1, and the paper's u_tau/U_B
-PAPER = {"f_col_scaled": channel.TABLE_D6["C1"]["fcol"],
-         "f_agg_scaled": channel.TABLE_D6["C1"]["fagg"],
+MODELS = settings.MODELS
+#: AB16 Table 3 / D.6 (settings.TABLE_D6), C1, and the paper's u_tau/U_B
+PAPER = {"f_col_scaled": settings.TABLE_D6["C1"]["fcol"],
+         "f_agg_scaled": settings.TABLE_D6["C1"]["fagg"],
          "u_tau_over_U_B": 0.053}
 
 
@@ -39,7 +39,7 @@ def factors_to_paper(m, f_col_scaled, alpha_f):
 
 
 def runs_base(runs, name):
-    return Path(runs or HERE / "runs") / name
+    return Path(runs or TUTORIAL / "runs") / name
 
 
 def variant_history(v):
@@ -85,7 +85,7 @@ def _running_profiles(p, ddir):
 def _release(p):
     """The release as a write of no steps (T* absolute), where the first
     interval of _between starts."""
-    return {"T": channel.end_time(p, "unladen") / p["tScale"], "n": 0,
+    return {"T": settings.end_time(p, "unladen") / p["tScale"], "n": 0,
             "alpha": 0.0}
 
 
@@ -152,7 +152,7 @@ def dispersion_history(p, ddir):
     if not len(st["Time"]):
         return out
     T = st["Time"] / p["tScale"]
-    s2 = (channel.N_PAPER / p["nParticles"])**2
+    s2 = (settings.N_PAPER / p["nParticles"])**2
     for x in out:
         dT = x["T1"] - x["T0"]
         if x["T1"] > T[-1] + 1e-9 or dT <= 0:
@@ -179,10 +179,10 @@ def agglomeration_so_far(p, adir, last_Tstar):
     sigma the larger of batch means and Poisson as for a finished
     window), scaled by s^2, alpha_f and their factors to the paper. An
     interim: the rates of a part of the window, not the window's."""
-    t0 = channel.end_time(p, "dispersion")
+    t0 = settings.end_time(p, "dispersion")
     last = last_Tstar - t0 / p["tScale"]
     w0, w1 = p["window"]
-    s2 = (channel.N_PAPER / p["nParticles"])**2
+    s2 = (settings.N_PAPER / p["nParticles"])**2
     out = {}
     for m in MODELS:
         try:
@@ -232,7 +232,7 @@ def progress(name, runs=None):
     agglomeration once the dispersion is done (concentration; None
     before) and the agglomeration stage's so far (agglomeration_so_far).
     None where nothing has run."""
-    p = channel.preset(name)
+    p = settings.preset(name)
     base = runs_base(runs, name)
     stages = {}
     for folder, last, markers in STAGE_DIRS:
@@ -245,7 +245,7 @@ def progress(name, runs=None):
         stages[folder] = {
             "lastWrite_Tstar": (float(ts[-1].name) / p["tScale"]
                                 if ts else None),
-            "end_Tstar": channel.end_time(p, last) / p["tScale"],
+            "end_Tstar": settings.end_time(p, last) / p["tScale"],
             "done": [m for m in markers if (d / f"done.{m}").is_file()]}
     if not stages:
         return None
@@ -299,7 +299,7 @@ def stage_times(base):
 def analyse_variant(name, runs=None):
     """The study's quantities of one variant (None if its C1
     agglomeration stage has not finished)."""
-    p = channel.preset(name)
+    p = settings.preset(name)
     base = runs_base(runs, name)
     dirs = post.run_dirs(name, base)
     if not all(("C1", m) in dirs for m in MODELS):
@@ -309,14 +309,14 @@ def analyse_variant(name, runs=None):
            "nParticles": p["nParticles"],
            "phases": [p[k] for k in ("unladen", "release", "dispersion",
                                      "agglomeration")],
-           "window": [w0, w1], "scale_s2": (channel.N_PAPER
+           "window": [w0, w1], "scale_s2": (settings.N_PAPER
                                             / p["nParticles"])**2,
            "models": {}}
     adir = dirs[("C1", "EAM")][0]
     for m in MODELS:
         r = post.analyse_run(p, *dirs[("C1", m)])
         st = read_stats(adir, m)
-        Tn = (st["Time"] - channel.end_time(p, "dispersion")) / p["tScale"]
+        Tn = (st["Time"] - settings.end_time(p, "dispersion")) / p["tScale"]
         k = int(np.searchsorted(Tn, w1 - 1e-9))
         k = min(k, len(Tn) - 1)
         d = contact_distributions(adir, m, p, w0, w1)

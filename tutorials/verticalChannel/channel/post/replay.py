@@ -1,10 +1,9 @@
-#!/usr/bin/env python3
 """verticalChannel: the collision-event logs of a preset's agglomeration
 stages replayed through EAM and MAM at e_n = 0.97, 0.80 and 0.60
 (doc/eventLog.md): alpha per first contact of each cloud's own
 first-contact ensemble, with 95 % intervals.
 
-    channelReplay.py PRESET [RUNS] [--reference]
+    channel.post.replay PRESET [RUNS] [--reference]
                               runs/PRESET/report (results/PRESET with
                               --reference): replay.json, replay.txt,
                               alphaReplay<config><cloud>.png of the runs
@@ -24,19 +23,19 @@ from pathlib import Path
 from aggloTools import eventlog
 from aggloTools.eventlog import BASE, EN_SCAN as EN
 
-import channel
-import channelPost
+from channel import TUTORIAL
+from channel.case import settings
+from channel.post import postprocess
 
-HERE = channelPost.HERE
-MODELS = channel.MODELS
+MODELS = settings.MODELS
 
 
 def replay(pname, runs_dir=None, reference=False):
-    out = channel.report_dir(pname, reference)
-    runs = {k: v for k, v in channelPost.run_dirs(pname, runs_dir).items()
+    out = settings.report_dir(pname, reference)
+    runs = {k: v for k, v in postprocess.run_dirs(pname, runs_dir).items()
             if eventlog.folder(*v).is_dir()}
     if not runs:
-        print(f"channelReplay.py: no collision event logs under "
+        print(f"channel.post.replay: no collision event logs under "
               f"runs/{pname}")
         return None
     out.mkdir(parents=True, exist_ok=True)
@@ -49,7 +48,7 @@ def replay(pname, runs_dir=None, reference=False):
         res = eventlog.portable(res, str(Path(*adir.parts[-4:])))
         summary["ensembles"][f"{c} {m}"] = res
         rows += eventlog.scan_rows(res, f"{c} {m}")
-        d6 = channel.TABLE_D6.get(c)
+        d6 = settings.TABLE_D6.get(c)
         paper = [(d6["fagg"][k] / d6["fcol"][k], f"paper {c} {k}: alpha_f"
                   " of Table D.6 (all contacts)") for k in MODELS] \
             if d6 else None
@@ -63,7 +62,7 @@ def replay(pname, runs_dir=None, reference=False):
     text = eventlog.scan_table(
         f"verticalChannel {pname}: replay of the first contacts of each"
         " agglomeration-stage cloud's collision-event log"
-        " (doc/eventLog.md)", rows, "channelReplay.py")
+        " (doc/eventLog.md)", rows, "channel/post/replay.py")
     (out / "replay.txt").write_text(text + "\n")
     print(text)
     return summary
@@ -71,7 +70,7 @@ def replay(pname, runs_dir=None, reference=False):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="channelReplay.py", description=__doc__.split("\n\n")[0],
+        prog="channel.post.replay", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("preset", help="the preset whose runs are replayed")
     ap.add_argument("runs", nargs="?", help="the folder holding the "
@@ -80,7 +79,7 @@ def main(argv):
                     help="write into the committed results/PRESET")
     a = ap.parse_args(argv)
     try:
-        channel.preset(a.preset)
+        settings.preset(a.preset)
     except SystemExit as e:
         sys.stderr.write(f"{e}\n")
         return 1

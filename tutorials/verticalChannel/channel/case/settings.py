@@ -1,19 +1,18 @@
-#!/usr/bin/env python3
 """verticalChannel: set-up and post-processing of the paper's main case
 (downward turbulent channel flow; doc/cases.md Part A).
 
-    channel.py settings [-np N] PRESET CONFIG STAGE [MODEL ...]
+    channel.case settings [-np N] PRESET CONFIG STAGE [MODEL ...]
                                   caseSettings of one stage (stdout) for
                                   N MPI ranks (default 1)
-    channel.py init CASE          initial flow: mean profile plus seeded
+    channel.case init CASE          initial flow: mean profile plus seeded
                                   divergence-free perturbations (at time 0)
 
 The particles (release, the smoke preset's seeded pairs, the branch into
-one cloud per model): channelParticles.py. The stages are run by
+one cloud per model): channel.case.particles. The stages are run by
 channelRuns.py (./Allrun), which calls progress, preset and
 configuration directly.
 
-Post-processing: channelPost.py PRESET.
+Post-processing: channel.post PRESET.
 
 Stages: unladen (single phase), release and dispersion (one cloud
 "particles", collisions on, agglomeration off), agglomeration (clouds EAM
@@ -31,15 +30,15 @@ import numpy as np
 from aggloTools import casesettings, fields, progress as prog
 from aggloTools.foamfile import entry_text, read_dict
 
-HERE = Path(__file__).resolve().parent
+from channel import TUTORIAL
 
 
 def report_dir(pname, reference=False):
     """Where the post-processing of a preset writes: its runs' report
     (runs/<preset>/report), or the committed reference (results/<preset>)
     with reference."""
-    return (HERE / "results" / pname if reference
-            else HERE / "runs" / pname / "report")
+    return (TUTORIAL / "results" / pname if reference
+            else TUTORIAL / "runs" / pname / "report")
 
 STAGES = ("unladen", "release", "dispersion", "agglomeration")
 MODELS = ("EAM", "MAM")
@@ -91,22 +90,22 @@ CONFIGURATION_NUMBERS = {"d": N(float, 0, open_lo=True),
 def read_presets():
     """The presets file, every entry checked."""
     return casesettings.read_presets(
-        HERE / "presets", PRESET_KEYS, {"common": COMMON_KEYS},
+        TUTORIAL / "presets", PRESET_KEYS, {"common": COMMON_KEYS},
         {"configurations": CONFIGURATION_KEYS})
 
 
 def preset(name):
     """The merged settings of a preset (common values first)."""
     p = casesettings.checked(
-        casesettings.merged(read_presets(), name, "channel.py",
+        casesettings.merged(read_presets(), name, "channel.case",
                             exclude=("configurations",)),
-        PRESET_NUMBERS, f"channel.py: presets/{name}")
+        PRESET_NUMBERS, f"channel.case: presets/{name}")
     p["name"] = name
     p.setdefault("seededPairs", 0)
     lo, hi = p["window"]
     agg = p["agglomeration"]
     if not lo < hi <= agg:
-        sys.exit(f"channel.py: presets/{name}: window ({lo:g} {hi:g}) must"
+        sys.exit(f"channel.case: presets/{name}: window ({lo:g} {hi:g}) must"
                  f" lie inside the agglomeration phase (0 {agg:g}) and end"
                  " after it starts")
     p["tScale"] = p["delta"] / p["Ubar"]            # delta/U_B [s]
@@ -117,12 +116,12 @@ def preset(name):
                "breakup": breakup_models()}
     for key, valid in choices.items():
         casesettings.choice(p[key], valid,
-                            f"channel.py: presets/{name}: {key}")
+                            f"channel.case: presets/{name}: {key}")
     return p
 
 
 #: The break-up models a preset may name (`breakup NAME;`)
-BREAKUP_MODELS = HERE / "breakupModels"
+BREAKUP_MODELS = TUTORIAL / "breakupModels"
 
 
 def breakup_models():
@@ -130,7 +129,7 @@ def breakup_models():
     try:
         d = read_dict(BREAKUP_MODELS)
     except ValueError as e:
-        sys.exit(f"channel.py: {e}")
+        sys.exit(f"channel.case: {e}")
     return tuple(d)
 
 
@@ -147,11 +146,11 @@ def breakup_entry(p, stage):
 def configuration(name):
     c = casesettings.checked(
         casesettings.named(read_presets()["configurations"], name,
-                           "configuration", "channel.py"),
-        CONFIGURATION_NUMBERS, f"channel.py: presets/configurations/{name}")
+                           "configuration", "channel.case"),
+        CONFIGURATION_NUMBERS, f"channel.case: presets/configurations/{name}")
     for key, valid in (("subModels", ("on", "off")),
                        ("wall", ("smooth", "rough"))):
-        casesettings.choice(c[key], valid, f"channel.py: presets/"
+        casesettings.choice(c[key], valid, f"channel.case: presets/"
                             f"configurations/{name}: {key}")
     c["name"] = name
     c["twoWay"] = c["subModels"] == "on"
@@ -174,14 +173,14 @@ def end_time(p, stage):
 
 def settings(pname, cname, stage, models=(), nprocs=1):
     p, c = preset(pname), configuration(cname)
-    casesettings.choice(stage, STAGES, "channel.py: stage")
+    casesettings.choice(stage, STAGES, "channel.case: stage")
     for m in models:
-        casesettings.choice(m, MODELS, "channel.py: model")
+        casesettings.choice(m, MODELS, "channel.case: model")
     if stage == "agglomeration":
         if not models:
             models = ("EAM",) if c["twoWay"] else MODELS
         if c["twoWay"] and len(models) != 1:
-            sys.exit("channel.py: a two-way coupled configuration runs one"
+            sys.exit("channel.case: a two-way coupled configuration runs one"
                      " agglomeration model per run")
         clouds = "(" + " ".join(models) + ")"
     elif stage == "unladen":
@@ -219,7 +218,8 @@ FoamFile
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 // The parameters of one stage of one run, in one place: written by
-//     channel.py settings {pname} {cname} {stage} {' '.join(models)}
+//     python -m channel.case settings {pname} {cname} {stage} \
+{' '.join(models)}
 // (./Allrun does it) from the presets and configurations files and
 // #included by the other dictionaries. Times in s; delta/U_B = {t_scale} s.
 
@@ -361,7 +361,7 @@ def progress(case):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="channel.py", description=__doc__.split("\n\n")[0],
+        prog="channel.case", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
     st = sub.add_parser("settings", help="the caseSettings of one stage, "
@@ -386,6 +386,3 @@ def main(argv):
         init(a.case)
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))

@@ -4,10 +4,10 @@ model, the trend, the variants one shortcut apart (particle number,
 phase lengths), the verdict and the interims
 (the figure: channelRegimePlots)."""
 
-import channelRegimePairs as pairs
-import channelRegimeTrend as trend
-import channelRegimeVerdict as verdict
-from channelRegimeAnalysis import MODELS, PAPER, START_SPAN, variant_history
+from channel.regime import pairs
+from channel.regime import trend
+from channel.regime import verdict
+from channel.regime.analysis import MODELS, PAPER, START_SPAN, variant_history
 
 
 def _g(v, fmt=".3g"):

@@ -9,10 +9,10 @@ import textwrap
 
 import numpy as np
 
-import channelRegimePairs as pairs
-import channelRegimeTrend as trend
-import channelRegimeVerdict as verdict
-from channelRegimeAnalysis import (MODELS, PAPER, QUANTILES, START_SPAN,
+from channel.regime import pairs
+from channel.regime import trend
+from channel.regime import verdict
+from channel.regime.analysis import (MODELS, PAPER, QUANTILES, START_SPAN,
                                    paper_alpha, variant_history)
 
 
@@ -205,7 +205,7 @@ def _trend_panel(ax, res):
 
 def _wall_bin_panels(ax_alpha, ax_rate, done):
     """Per finished variant and model, over the bins of wall distance
-    (channelRegimeAnalysis.by_wall_distance): the ratio of agglomerating
+    (analysis.by_wall_distance): the ratio of agglomerating
     to all contacts (bins without an agglomeration at the panel's foot,
     open) and the contacts per T* x s^2 of the window."""
     import matplotlib.transforms

@@ -1,12 +1,12 @@
 """verticalChannel: where and how fast the particles collide, from a
 cloud's collision-event log (doc/eventLog.md): the contacts of a window
 by wall distance, their normal approach speeds, and the share near the
-walls that the report's head states. Used by the report (channelPost.py)
-and the regime study (channelRegimeAnalysis.py)."""
+walls that the report's head states. Used by the report (channel.post)
+and the regime study (channel.regime.analysis)."""
 
 import numpy as np
 
-import channel
+from channel.case import settings
 from aggloTools import eventlog, uncertainty
 
 #: Quantiles reported of the distributions at contact
@@ -49,7 +49,7 @@ def contact_distributions(adir, cloud, p, w0, w1):
         ev = eventlog.read_events(adir, cloud)
     except FileNotFoundError:
         return None
-    t0 = channel.end_time(p, "dispersion")
+    t0 = settings.end_time(p, "dispersion")
     T = (ev["time"] - t0) / p["tScale"]
     ev = ev[(T >= w0) & (T <= w1) & (ev["category"] < 2)]
     if not len(ev):

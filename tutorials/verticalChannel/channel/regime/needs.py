@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-import channelRegimeTrend as trend
+from channel.regime import trend
 
 #: Names of the quantities in the report
 NAMES = {"f_col_scaled": "f_col x s^2", "alpha_f": "alpha_f"}
