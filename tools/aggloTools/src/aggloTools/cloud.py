@@ -166,6 +166,16 @@ def read_positions(path):
     """Cartesian positions from the legacy `positions` file (ASCII rows
     `(x y z) celli`, or binary records: the position and the cell label
     as one raw block in parentheses, then a newline)."""
+    return _particle_list(path, 3, 1)[0]
+
+
+def _particle_list(path, ncomp, nlabels):
+    """The rows of a particle list file (positions, coordinates): a vector
+    of ncomp scalars and nlabels labels each, ASCII `(c1 ... cn) l1 ...`
+    or binary records (the vector and the labels as one raw block in
+    parentheses, then a newline): (vectors (n, ncomp) float, labels (n,
+    nlabels) int64). A file cut off, a wrong count or another layout
+    stops."""
     data = Path(path).read_bytes()
     hend = data.index(b"}") + 1
     head = data[:hend]
@@ -173,12 +183,16 @@ def read_positions(path):
         label, scalar = binary_arch(head)
         m = re.compile(rb"(\s|//[^\n]*)*(\d+)\s*\(\n?").match(data, hend)
         n = int(m.group(2))
-        rec = np.dtype([("open", "u1"), ("x", scalar, 3), ("cell", label),
-                        ("close", "u1"), ("nl", "u1")])
+        rec = np.dtype([("open", "u1"), ("v", scalar, ncomp),
+                        ("labels", label, nlabels), ("close", "u1"),
+                        ("nl", "u1")])
         a = _binary_records(path, data, rec, n, m.end())
-        return a["x"].astype(float).reshape(n, 3)
-    rows = _ascii_rows(path, data[hend:].decode(), r"-?\d+", 3)
-    return np.array([r[0] for r in rows], float).reshape(-1, 3)
+        return (a["v"].astype(float).reshape(n, ncomp),
+                a["labels"].astype(np.int64).reshape(n, nlabels))
+    rows = _ascii_rows(path, data[hend:].decode(),
+                       r"\s+".join([r"-?\d+"] * nlabels), ncomp)
+    return (np.array([r[0] for r in rows], float).reshape(-1, ncomp),
+            np.array([r[1] for r in rows], np.int64).reshape(-1, nlabels))
 
 
 def _ascii_rows(path, text, labels, ncomp):
@@ -282,25 +296,7 @@ def read_coordinates(path):
     (coordinates (n, 4), celli, tetFacei, tetPti). Binary records are the
     particle's raw barycentric and three labels (particle::sizeofPosition),
     each followed by a newline."""
-    data = Path(path).read_bytes()
-    hend = data.index(b"}") + 1
-    head = data[:hend]
-    if is_binary(head):
-        label, scalar = binary_arch(head)
-        m = re.compile(rb"(\s|//[^\n]*)*(\d+)\s*\(\n?").match(data, hend)
-        n = int(m.group(2))
-        rec = np.dtype([("open", "u1"), ("b", scalar, 4), ("cell", label),
-                        ("tetFace", label), ("tetPt", label),
-                        ("close", "u1"), ("nl", "u1")])
-        a = _binary_records(path, data, rec, n, m.end())
-        return (a["b"].astype(float), a["cell"].astype(np.int64),
-                a["tetFace"].astype(np.int64), a["tetPt"].astype(np.int64))
-    rows = _ascii_rows(path, data[hend:].decode(),
-                       r"-?\d+\s+-?\d+\s+-?\d+", 4)
-    if not rows:
-        return (np.zeros((0, 4)),) + (np.zeros(0, np.int64),) * 3
-    b = np.array([r[0] for r in rows], float)
-    lab = np.array([r[1] for r in rows], np.int64)
+    b, lab = _particle_list(path, 4, 3)
     return b, lab[:, 0], lab[:, 1], lab[:, 2]
 
 
