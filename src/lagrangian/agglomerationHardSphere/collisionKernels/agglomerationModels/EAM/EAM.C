@@ -193,17 +193,50 @@ void Foam::agglomerationModels::EAM::collide
     // 1. Collision without cohesion (AB16 Sec. 2.2.1)
     reboundWithoutCohesion(pair, p1, p2, outcome);
 
+    // 2.-3. What decides: the energies and factors (AB16 Eqs. 22, 37-46,
+    //    55, 58)
+    const cohesionEnergies e = energies(pair, p1, p2, outcome);
+
+    // 4. Agglomeration: AB16 Eq. 21, or Eq. 65 (corrected model only)
+    if (e.dE >= e.EkinPlus + e.ErotPlus - e.ErotAg)
+    {
+        outcome.agglomerates = true;
+        outcome.branch = branchCode_[EQ21];
+        return;
+    }
+    if (!alletto2014_ && e.kn2 <= 0 && e.kt2 < 0)
+    {
+        outcome.agglomerates = true;
+        outcome.branch = branchCode_[EQ65];
+        return;
+    }
+
+    // 5. Rebound with cohesion (AB16 Eqs. 47-59; Alletto: Eqs. 60-64)
+    reboundWithCohesion(pair, e, outcome);
+}
+
+
+Foam::agglomerationModels::EAM::cohesionEnergies
+Foam::agglomerationModels::EAM::energies
+(
+    const binaryCollision& pair,
+    const hardSphereState& p1,
+    const hardSphereState& p2,
+    collisionOutcome& outcome
+) const
+{
     const hardSphereState& p1Plus = outcome.p1;
     const hardSphereState& p2Plus = outcome.p2;
     const vector& n = pair.n();
     const scalar mHat = pair.mHat();
     const scalar I1 = p1.inertia();
     const scalar I2 = p2.inertia();
+    cohesionEnergies e;
 
     // 2. van-der-Waals energy difference (AB16 Eq. 37)
     const scalar vE = impactSpeed(impactVelocity_, pair);
 
-    const scalar dE =
+    e.dE =
         material_.vanDerWaalsEnergy
         (
             coeffs_.en(), p1.d, p1.rho, p2.d, p2.rho, vE
@@ -212,131 +245,74 @@ void Foam::agglomerationModels::EAM::collide
     // 3. Energies after the collision (AB16 Eq. 22) and of the would-be
     //    agglomerate (AB16 Eqs. 38-46; pre-collision L, Eq. 41)
     const vector w = p2Plus.U - p1Plus.U;
-    const scalar EkinPlus = 0.5*mHat*magSqr(w);
-    const scalar ErotPlus =
+    e.EkinPlus = 0.5*mHat*magSqr(w);
+    e.ErotPlus =
         0.5*I1*magSqr(p1Plus.omega) + 0.5*I2*magSqr(p2Plus.omega);
     const vector L = pair.angularMomentum(p1, p2);
-    const scalar ErotAg =
-        dumbbellRotationalEnergy(L, n, I1, I2, mHat, pair.ell());
+    e.ErotAg = dumbbellRotationalEnergy(L, n, I1, I2, mHat, pair.ell());
 
-    // Tangential direction of the cohesion correction (doc/models.md 2.5, A4)
-    vector tE(Zero);
-    if (tangentialProjection_ == projectionType::PAPER)
-    {
-        tE = pair.t();
-    }
-    else
-    {
-        const vector wt = w - (w & n)*n;
-        const scalar magWt = mag(wt);
-        if (magWt > 0)
-        {
-            tE = wt/magWt;
-        }
-    }
-
-    const scalar wn = w & n;
-    const scalar wt = w & tE;
-    const scalar En = 0.5*mHat*wn*wn;
-    const scalar Et = 0.5*mHat*wt*wt;
+    e.tE = cohesionTangent(pair, w);
+    e.wn = w & n;
+    e.wt = w & e.tE;
+    e.En = 0.5*mHat*e.wn*e.wn;
+    e.Et = 0.5*mHat*e.wt*e.wt;
 
     // AB16 Eq. 55 (En > 0 since e_n > 0 and u_n < 0)
-    const scalar kn2 = 1 - dE/En;
-
-    // AB16 Eq. 58, only if kn2 <= 0 (doc/models.md 2.4)
-    scalar kt2 = std::numeric_limits<scalar>::quiet_NaN();
-    if (kn2 <= 0)
-    {
-        if (Et > 0)
-        {
-            kt2 = 1 - (dE - En)/Et;
-        }
-        else
-        {
-            kt2 =
-                dE > En
-              ? -std::numeric_limits<scalar>::infinity()
-              : scalar(1);
-        }
-    }
+    e.kn2 = 1 - e.dE/e.En;
+    e.kt2 = tangentialFactorSqr(e);
 
     scalarList& value = outcome.values;
-    value[DE_VDW] = dE;
-    value[EKIN_PLUS] = EkinPlus;
-    value[EROT_PLUS] = ErotPlus;
-    value[EROT_AG] = ErotAg;
-    value[KN2] = kn2;
-    value[KT2] = kt2;
+    value[DE_VDW] = e.dE;
+    value[EKIN_PLUS] = e.EkinPlus;
+    value[EROT_PLUS] = e.ErotPlus;
+    value[EROT_AG] = e.ErotAg;
+    value[KN2] = e.kn2;
+    value[KT2] = e.kt2;
+    return e;
+}
 
-    // 4. Agglomeration: AB16 Eq. 21, or Eq. 65 (corrected model only)
-    if (dE >= EkinPlus + ErotPlus - ErotAg)
-    {
-        outcome.agglomerates = true;
-        outcome.branch = branchCode_[EQ21];
-        return;
-    }
-    if (!alletto2014_ && kn2 <= 0 && kt2 < 0)
-    {
-        outcome.agglomerates = true;
-        outcome.branch = branchCode_[EQ65];
-        return;
-    }
 
-    // 5. Rebound with cohesion (AB16 Eqs. 47-59; Alletto: Eqs. 60-64)
-    scalar kn = 1;
-    scalar kt = 1;
-    scalar komega = 1;
-    if (kn2 > 0)
+Foam::vector Foam::agglomerationModels::EAM::cohesionTangent
+(
+    const binaryCollision& pair,
+    const vector& w
+) const
+{
+    // doc/models.md 2.5, A4
+    if (tangentialProjection_ == projectionType::PAPER)
     {
-        outcome.branch = branchCode_[CASE_I];
-        kn = std::sqrt(kn2);
+        return pair.t();
     }
-    else if (kt2 >= 0)
+    const vector& n = pair.n();
+    const vector wt = w - (w & n)*n;
+    const scalar magWt = mag(wt);
+    if (magWt > 0)
     {
-        outcome.branch = branchCode_[CASE_II];
-        kn = 0;
-        kt = std::sqrt(kt2);
+        return wt/magWt;
     }
-    else
+    return Zero;
+}
+
+
+Foam::scalar Foam::agglomerationModels::EAM::tangentialFactorSqr
+(
+    const cohesionEnergies& e
+)
+{
+    // AB16 Eq. 58, only if kn2 <= 0 (doc/models.md 2.4; NaN otherwise,
+    // a NaN kn2 included)
+    if (!(e.kn2 <= 0))
     {
-        // Only reached by alletto2014
-        outcome.branch = branchCode_[CASE_III_REBOUND];
-        kn = 0;
-        kt = 0;
-        const scalar X = dE - En - Et;
-        if (ErotPlus > 0)
-        {
-            // AB16 Eq. 64; beta of Eq. 62 cancels
-            const scalar komega2 = 1 - X/ErotPlus;
-            value[KOMEGA2] = komega2;
-            outcome.setFlag(SPIN_CLAMPED, komega2 < 0);
-            if (komega2 < 0)
-            {
-                komega = 0;
-            }
-            else
-            {
-                komega = std::sqrt(komega2);
-            }
-        }
-        else
-        {
-            komega = 0;
-        }
+        return std::numeric_limits<scalar>::quiet_NaN();
     }
-
-    // AB16 Eq. 52
-    const vector fAg = -(1 - kn)*wn*n - (1 - kt)*wt*tE;
-
-    // AB16 Eqs. 47-48: centres only, spins scaled by k_omega
-    outcome.p1.U -= (mHat/pair.m1())*fAg;
-    outcome.p2.U += (mHat/pair.m2())*fAg;
-    outcome.p1.omega *= komega;
-    outcome.p2.omega *= komega;
-
-    // doc/models.md 5.1, A6: orbital angular momentum change (non-zero
-    // in case II)
-    value[DELTA_L] = mag(mHat*pair.ell()*(n ^ fAg));
+    if (e.Et > 0)
+    {
+        return 1 - (e.dE - e.En)/e.Et;
+    }
+    return
+        e.dE > e.En
+      ? -std::numeric_limits<scalar>::infinity()
+      : scalar(1);
 }
 
 

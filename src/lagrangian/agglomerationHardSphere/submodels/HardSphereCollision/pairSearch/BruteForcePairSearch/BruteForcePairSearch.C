@@ -43,6 +43,9 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
     lattice_(mesh, "pairSearch bruteForce"),
     wallFaces_(hardSphereWallInteraction::wallFaces(mesh)),
     received_(),
+    partner_(),
+    partnerX1_(),
+    partnerLocal_(),
     referred_(),
     referredX1_()
 {}
@@ -51,13 +54,10 @@ Foam::BruteForcePairSearch<ParcelType>::BruteForcePairSearch
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class ParcelType>
-void Foam::BruteForcePairSearch<ParcelType>::search
+void Foam::BruteForcePairSearch<ParcelType>::gatherPartners
 (
     const UList<ParcelType*>& parcels,
-    const UList<point>& x1,
-    const scalar,
-    const scalar inflate,
-    const typename PairSearch<ParcelType>::visitor& visit
+    const UList<point>& x1
 )
 {
     const label n = parcels.size();
@@ -85,14 +85,14 @@ void Foam::BruteForcePairSearch<ParcelType>::search
     pBufs.finishedSends();
 
     // All partners: own particles (index, x1) and received copies
-    DynamicList<const ParcelType*> partner(parcels.size());
-    DynamicList<point> partnerX1(parcels.size());
-    DynamicList<label> partnerLocal(parcels.size());
+    partner_.clear();
+    partnerX1_.clear();
+    partnerLocal_.clear();
     forAll(parcels, i)
     {
-        partner.append(parcels[i]);
-        partnerX1.append(x1[i]);
-        partnerLocal.append(i);
+        partner_.append(parcels[i]);
+        partnerX1_.append(x1[i]);
+        partnerLocal_.append(i);
     }
 
     received_.clear();
@@ -113,31 +113,93 @@ void Foam::BruteForcePairSearch<ParcelType>::search
         label k = 0;
         for (const ParcelType& p : received_[proci])
         {
-            partner.append(&p);
-            partnerX1.append(theirX1[k++]);
-            partnerLocal.append(-1);
+            partner_.append(&p);
+            partnerX1_.append(theirX1[k++]);
+            partnerLocal_.append(-1);
         }
     }
+}
 
+
+template<class ParcelType>
+Foam::List<Foam::vector>
+Foam::BruteForcePairSearch<ParcelType>::partnerBoxes
+(
+    const scalar inflate,
+    List<sweptBoxGrid::box>& box
+) const
+{
     // Boxes of all partners, and the image shifts that can matter: boxes
     // that overlap have end positions within D_i + D_j <= 2 D_max
     // (tested as the grid keeps them: rounded outward to single precision)
-    List<sweptBoxGrid::box> box(partner.size());
+    box.setSize(partner_.size());
     scalar diagMax = 0;
-    forAll(partner, k)
+    forAll(partner_, k)
     {
-        const ParcelType& pk = *partner[k];
+        const ParcelType& pk = *partner_[k];
         const boundBox bk
         (
             sweptBoxGrid::sweptBox
             (
-                pk.stage().startPosition(), partnerX1[k], 0.5*inflate*pk.d()
+                pk.stage().startPosition(), partnerX1_[k], 0.5*inflate*pk.d()
             )
         );
         box[k] = sweptBoxGrid::rounded(bk);
         diagMax = max(diagMax, mag(bk.span()));
     }
-    const List<vector> shifts(lattice_.shifts(2*diagMax));
+    return lattice_.shifts(2*diagMax);
+}
+
+
+template<class ParcelType>
+bool Foam::BruteForcePairSearch<ParcelType>::refer
+(
+    const ParcelType& pk,
+    const point& xk,
+    const vector& s,
+    const scalar inflate,
+    const sweptBoxGrid::box& boxI
+)
+{
+    // An image: a copy moved by the shift (its start position with it)
+    autoPtr<ParcelType> copy(new ParcelType(pk));
+    copy->transformProperties(s);
+    const sweptBoxGrid::box bk
+    (
+        sweptBoxGrid::rounded
+        (
+            sweptBoxGrid::sweptBox
+            (
+                copy->stage().startPosition(),
+                xk,
+                0.5*inflate*copy->d()
+            )
+        )
+    );
+    if (!sweptBoxGrid::overlap(boxI, bk))
+    {
+        return false;
+    }
+    referred_.append(copy.ptr());
+    referredX1_.append(xk);
+    return true;
+}
+
+
+template<class ParcelType>
+void Foam::BruteForcePairSearch<ParcelType>::search
+(
+    const UList<ParcelType*>& parcels,
+    const UList<point>& x1,
+    const scalar,
+    const scalar inflate,
+    const typename PairSearch<ParcelType>::visitor& visit
+)
+{
+    const label n = parcels.size();
+    gatherPartners(parcels, x1);
+    List<sweptBoxGrid::box> box;
+    const List<vector> shifts(partnerBoxes(inflate, box));
 
     referred_.clear();
     referredX1_.clear();
@@ -146,10 +208,10 @@ void Foam::BruteForcePairSearch<ParcelType>::search
     {
         const ParcelType& pi = *parcels[i];
 
-        forAll(partner, k)
+        forAll(partner_, k)
         {
-            const ParcelType& pk = *partner[k];
-            const label j = partnerLocal[k];
+            const ParcelType& pk = *partner_[k];
+            const label j = partnerLocal_[k];
 
             for (const vector& s : shifts)
             {
@@ -175,33 +237,11 @@ void Foam::BruteForcePairSearch<ParcelType>::search
                     {
                         visit(i, j);
                     }
-                    continue;
                 }
-
-                // An image: a copy moved by the shift (its start position
-                // with it)
-                const point xk(partnerX1[k] + s);
-                autoPtr<ParcelType> copy(new ParcelType(pk));
-                copy->transformProperties(s);
-                const sweptBoxGrid::box bk
-                (
-                    sweptBoxGrid::rounded
-                    (
-                        sweptBoxGrid::sweptBox
-                        (
-                            copy->stage().startPosition(),
-                            xk,
-                            0.5*inflate*copy->d()
-                        )
-                    )
-                );
-                if (!sweptBoxGrid::overlap(box[i], bk))
+                else if (refer(pk, partnerX1_[k] + s, s, inflate, box[i]))
                 {
-                    continue;
+                    visit(i, n + referred_.size() - 1);
                 }
-                referred_.append(copy.ptr());
-                referredX1_.append(xk);
-                visit(i, n + referred_.size() - 1);
             }
         }
     }
