@@ -42,9 +42,9 @@ Foam::nearestWallFaces::nearestWallFaces(const fvMesh& mesh)
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::nearestWallFaces::update()
+void Foam::nearestWallFaces::numberWallFaces()
 {
     const polyBoundaryMesh& bm = mesh_.boundaryMesh();
 
@@ -60,50 +60,49 @@ void Foam::nearestWallFaces::update()
     }
     wallPatches_.transfer(walls);
     wallFaces_ = globalIndex(n);
+}
 
-    // Each wall face carries its global index through the mesh wave
-    volScalarField face
-    (
-        IOobject
-        (
-            "nearestWallFace",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedScalar("nearestWallFace", dimless, -1)
-    );
-    label k = wallFaces_.offset(Pstream::myProcNo());
-    for (const label patchi : wallPatches_)
-    {
-        scalarField& f = face.boundaryFieldRef()[patchi];
-        forAll(f, i)
-        {
-            f[i] = k++;
-        }
-    }
 
-    const wallDistData<wallPointData<scalar>> wave(mesh_, face);
-
-    y_.reset
+Foam::tmp<Foam::volScalarField> Foam::nearestWallFaces::wallFaceLabels()
+const
+{
+    tmp<volScalarField> tface
     (
         new volScalarField
         (
             IOobject
             (
-                "nearestWallDistance",
+                "nearestWallFace",
                 mesh_.time().timeName(),
                 mesh_,
                 IOobject::NO_READ,
                 IOobject::NO_WRITE,
                 false
             ),
-            wave
+            mesh_,
+            dimensionedScalar("nearestWallFace", dimless, -1)
         )
     );
+    label k = wallFaces_.offset(Pstream::myProcNo());
+    for (const label patchi : wallPatches_)
+    {
+        scalarField& f = tface.ref().boundaryFieldRef()[patchi];
+        forAll(f, i)
+        {
+            f[i] = k++;
+        }
+    }
+    return tface;
+}
+
+
+void Foam::nearestWallFaces::nearestFaces
+(
+    const volScalarField& wave,
+    const volScalarField& face
+)
+{
+    const polyBoundaryMesh& bm = mesh_.boundaryMesh();
 
     // A cell or face that the wave did not reach keeps the distance GREAT
     const label start = wallFaces_.offset(Pstream::myProcNo());
@@ -138,6 +137,37 @@ void Foam::nearestWallFaces::update()
         }
     }
     remote_ = returnReduce(remote, orOp<bool>());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::nearestWallFaces::update()
+{
+    numberWallFaces();
+
+    // Each wall face carries its global index through the mesh wave
+    tmp<volScalarField> tface(wallFaceLabels());
+    volScalarField& face = tface.ref();
+    const wallDistData<wallPointData<scalar>> wave(mesh_, face);
+
+    y_.reset
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                "nearestWallDistance",
+                mesh_.time().timeName(),
+                mesh_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            wave
+        )
+    );
+    nearestFaces(wave, face);
 }
 
 

@@ -88,88 +88,16 @@ Foam::eventLogFiles<Event>::eventLogFiles
     nOthers_(0)
 {
     const label start = mesh.time().timeIndex();
-    label removed = 0;
     label nFound = 0;           // the events files there before this run
-    if (Pstream::master())
-    {
-        mkDir(dir_);
-        for (const fileName& f : readDir(dir_, fileName::FILE))
-        {
-            if (f.hasExt("bin") && f.startsWith("events"))
-            {
-                ++nFound;
-                removed += eventFile<Event>::truncateAfter(dir_/f, start);
-            }
-        }
-    }
+    const label removed = cutBack(start, nFound);
+
     // Every rank appends only after the master has cut the files back;
     // its file exists from the start (an empty log is a log)
-    reduce(removed, sumOp<label>());
-    reduce(nFound, sumOp<label>());
     mkDir(dir_);
     eventFile<Event>::append(file_, List<Event>(), names_);
     nInFile_ = eventFile<Event>::size(file_);
-    if (Pstream::master())
-    {
-        for (const fileName& f : readDir(dir_, fileName::FILE))
-        {
-            // events<rank>.bin of a rank this run does not have
-            const std::string rank(f.nameLessExt().substr(6));
-            label r = -1;
-            if
-            (
-                f.hasExt("bin") && f.startsWith("events")
-             && !(readLabel(rank, r) && r >= 0 && r < Pstream::nProcs())
-            )
-            {
-                nOthers_ += eventFile<Event>::size(dir_/f);
-            }
-        }
-    }
-
-    // The log must hold what it held when the start time was written: a
-    // run from an earlier time cuts it back, and time folders after that
-    // run's end are from the older run
-    IOobject io(recordIO(IOobject::MUST_READ));
-    const label nHeld = returnReduce(nInFile_ + nOthers_, sumOp<label>());
-    const bool readable = io.typeHeaderOk<IOdictionary>(true);
-    if (!readable && isFile(io.objectPath()))
-    {
-        // Written, but empty or cut off: the count cannot be checked
-        FatalErrorInFunction
-            << "The record " << io.objectPath() << " of the " << what().c_str()
-            << " is empty or cut off: the events logged up to time "
-            << mesh.time().timeName() << " cannot be checked. Restart from"
-            << " an earlier time" << exit(FatalError);
-    }
-    if (readable)
-    {
-        const label nRecorded = IOdictionary(io).get<label>("nEvents");
-        if (nRecorded && !nFound)
-        {
-            FatalErrorInFunction
-                << "The " << what().c_str() << " " << dir_ << " has no"
-                << " events file, but " << nRecorded << " events were"
-                << " logged when time " << mesh.time().timeName() << " was"
-                << " written (" << io.objectPath() << "): the log was"
-                << " deleted or moved. Put it back, start from a time"
-                << " before its first event, or switch eventLog off"
-                << exit(FatalError);
-        }
-        if (nHeld != nRecorded)
-        {
-            FatalErrorInFunction
-                << "The " << what().c_str() << " " << dir_ << " holds "
-                << nHeld
-                << " events up to time " << mesh.time().timeName()
-                << ", but " << nRecorded << " were logged when this time"
-                << " was written (" << io.objectPath() << "). A run from"
-                << " an earlier time has cut the log back since: the time"
-                << " folders after that run's end are from an older run."
-                << " Remove them and start from the last time that run"
-                << " wrote, or switch eventLog off" << exit(FatalError);
-        }
-    }
+    nOthers_ = countOthers();
+    checkRecord(nFound);
 
     Info<< "    eventLog: " << dir_ << " (time index " << start;
     if (removed)
@@ -184,6 +112,110 @@ template<class Event>
 Foam::eventLogFiles<Event>::~eventLogFiles()
 {
     flush();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Event>
+Foam::label Foam::eventLogFiles<Event>::cutBack
+(
+    const label start,
+    label& nFound
+) const
+{
+    label removed = 0;
+    nFound = 0;
+    if (Pstream::master())
+    {
+        mkDir(dir_);
+        for (const fileName& f : readDir(dir_, fileName::FILE))
+        {
+            if (f.hasExt("bin") && f.startsWith("events"))
+            {
+                ++nFound;
+                removed += eventFile<Event>::truncateAfter(dir_/f, start);
+            }
+        }
+    }
+    reduce(removed, sumOp<label>());
+    reduce(nFound, sumOp<label>());
+    return removed;
+}
+
+
+template<class Event>
+Foam::label Foam::eventLogFiles<Event>::countOthers() const
+{
+    label n = 0;
+    if (Pstream::master())
+    {
+        for (const fileName& f : readDir(dir_, fileName::FILE))
+        {
+            // events<rank>.bin of a rank this run does not have
+            const std::string rank(f.nameLessExt().substr(6));
+            label r = -1;
+            if
+            (
+                f.hasExt("bin") && f.startsWith("events")
+             && !(readLabel(rank, r) && r >= 0 && r < Pstream::nProcs())
+            )
+            {
+                n += eventFile<Event>::size(dir_/f);
+            }
+        }
+    }
+    return n;
+}
+
+
+template<class Event>
+void Foam::eventLogFiles<Event>::checkRecord(const label nFound) const
+{
+    // The log must hold what it held when the start time was written: a
+    // run from an earlier time cuts it back, and time folders after that
+    // run's end are from the older run
+    IOobject io(recordIO(IOobject::MUST_READ));
+    const label nHeld = returnReduce(nInFile_ + nOthers_, sumOp<label>());
+    const bool readable = io.typeHeaderOk<IOdictionary>(true);
+    if (!readable && isFile(io.objectPath()))
+    {
+        // Written, but empty or cut off: the count cannot be checked
+        FatalErrorInFunction
+            << "The record " << io.objectPath() << " of the " << what().c_str()
+            << " is empty or cut off: the events logged up to time "
+            << mesh_.time().timeName() << " cannot be checked. Restart from"
+            << " an earlier time" << exit(FatalError);
+    }
+    if (!readable)
+    {
+        return;
+    }
+    const label nRecorded = IOdictionary(io).get<label>("nEvents");
+    if (nRecorded && !nFound)
+    {
+        FatalErrorInFunction
+            << "The " << what().c_str() << " " << dir_ << " has no"
+            << " events file, but " << nRecorded << " events were"
+            << " logged when time " << mesh_.time().timeName() << " was"
+            << " written (" << io.objectPath() << "): the log was"
+            << " deleted or moved. Put it back, start from a time"
+            << " before its first event, or switch eventLog off"
+            << exit(FatalError);
+    }
+    if (nHeld != nRecorded)
+    {
+        FatalErrorInFunction
+            << "The " << what().c_str() << " " << dir_ << " holds "
+            << nHeld
+            << " events up to time " << mesh_.time().timeName()
+            << ", but " << nRecorded << " were logged when this time"
+            << " was written (" << io.objectPath() << "). A run from"
+            << " an earlier time has cut the log back since: the time"
+            << " folders after that run's end are from an older run."
+            << " Remove them and start from the last time that run"
+            << " wrote, or switch eventLog off" << exit(FatalError);
+    }
 }
 
 

@@ -30,13 +30,17 @@ License
 #include "Pstream.H"
 #include <algorithm>
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::globalPatchTriangles::globalPatchTriangles
+void Foam::globalPatchTriangles::gather
 (
     const polyMesh& mesh,
     const label patchi,
-    const scalarField& faceWeights
+    const scalarField& faceWeights,
+    DynamicList<point>& pts,
+    DynamicList<label>& procs,
+    DynamicList<label>& faces,
+    DynamicList<scalar>& weights
 )
 {
     const polyPatch& pp = mesh.boundaryMesh()[patchi];
@@ -76,10 +80,6 @@ Foam::globalPatchTriangles::globalPatchTriangles
     Pstream::gatherList(allWeights);
     Pstream::scatterList(allWeights);
 
-    DynamicList<point> pts;
-    DynamicList<label> procs;
-    DynamicList<label> faces;
-    DynamicList<scalar> weights;
     forAll(allFaces, proci)
     {
         pts.append(allPoints[proci]);
@@ -87,10 +87,16 @@ Foam::globalPatchTriangles::globalPatchTriangles
         faces.append(allFaces[proci]);
         weights.append(allWeights[proci]);
     }
+}
 
-    // The order of the centroids (x, then y, then z): the same on every
-    // rank and in every decomposition
-    const label n = faces.size();
+
+Foam::labelList Foam::globalPatchTriangles::centroidOrder
+(
+    const UList<point>& pts
+)
+{
+    // x, then y, then z: the same on every rank and in every decomposition
+    const label n = pts.size()/3;
     pointField centroids(n);
     for (label t = 0; t < n; ++t)
     {
@@ -110,7 +116,29 @@ Foam::globalPatchTriangles::globalPatchTriangles
             return pa.z() < pb.z();
         }
     );
+    return order;
+}
 
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::globalPatchTriangles::globalPatchTriangles
+(
+    const polyMesh& mesh,
+    const label patchi,
+    const scalarField& faceWeights
+)
+{
+    DynamicList<point> pts;
+    DynamicList<label> procs;
+    DynamicList<label> faces;
+    DynamicList<scalar> weights;
+    gather(mesh, patchi, faceWeights, pts, procs, faces, weights);
+
+    // The triangles in the order of their centroids, with the cumulative
+    // weighted area
+    const labelList order(centroidOrder(pts));
+    const label n = faces.size();
     points_.setSize(3*n);
     cumulativeArea_.setSize(n);
     proc_.setSize(n);
