@@ -28,6 +28,56 @@ License
 #include "CollisionCandidates.H"
 #include "pairContact.H"
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class ParcelType>
+inline void Foam::CollisionCandidates<ParcelType>::markNearPartners
+(
+    const label i,
+    const label j,
+    const bool jReal,
+    const encounterMemory::memory& mi,
+    const encounterMemory::memory& mj,
+    const vector& xij1,
+    const scalar R,
+    const encounterMemory& memory
+)
+{
+    if
+    (
+        (mi.lastPartner[1] >= 0 || (jReal && mj.lastPartner[1] >= 0))
+     && memory.near(magSqr(xij1), R)
+    )
+    {
+        if (mi.lastPartner == mj.id)
+        {
+            partnerNear_[i] = true;
+        }
+        if (jReal && mj.lastPartner == mi.id)
+        {
+            partnerNear_[j] = true;
+        }
+    }
+}
+
+
+template<class ParcelType>
+void Foam::CollisionCandidates<ParcelType>::forgetFarPartners
+(
+    const UList<ParcelType*>& parcels
+)
+{
+    forAll(parcels, i)
+    {
+        if (!partnerNear_[i] && parcels[i]->lastPartnerId() >= 0)
+        {
+            parcels[i]->lastPartnerProc() = -1;
+            parcels[i]->lastPartnerId() = -1;
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class ParcelType>
@@ -72,21 +122,7 @@ void Foam::CollisionCandidates<ParcelType>::find
             {{pj.origProc(), pj.origId()}, pj.lastPartner(),
              pj.lastContactTime()};
 
-        if
-        (
-            (mi.lastPartner[1] >= 0 || (jReal && mj.lastPartner[1] >= 0))
-         && memory.near(magSqr(xj1 - x1[i]), R)
-        )
-        {
-            if (mi.lastPartner == mj.id)
-            {
-                partnerNear_[i] = true;
-            }
-            if (jReal && mj.lastPartner == mi.id)
-            {
-                partnerNear_[j] = true;
-            }
-        }
+        markNearPartners(i, j, jReal, mi, mj, xj1 - x1[i], R, memory);
 
         if (!pc.find(xi0, dxi, xj0, dxj, R))
         {
@@ -121,14 +157,7 @@ void Foam::CollisionCandidates<ParcelType>::find
     // (the categories of this step's events are already set)
     if (memory.releases())
     {
-        forAll(parcels, i)
-        {
-            if (!partnerNear_[i] && parcels[i]->lastPartnerId() >= 0)
-            {
-                parcels[i]->lastPartnerProc() = -1;
-                parcels[i]->lastPartnerId() = -1;
-            }
-        }
+        forgetFarPartners(parcels);
     }
 }
 

@@ -86,25 +86,14 @@ Foam::InteractionListsPairSearch<ParcelType>::InteractionListsPairSearch
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
 template<class ParcelType>
-void Foam::InteractionListsPairSearch<ParcelType>::search
+void Foam::InteractionListsPairSearch<ParcelType>::sortByCell
 (
-    const UList<ParcelType*>& parcels,
-    const UList<point>& x1,
-    const scalar distance,
-    const scalar,
-    const typename PairSearch<ParcelType>::visitor& visit
+    const UList<ParcelType*>& parcels
 )
 {
-    checkLists(distance);
-    InteractionLists<ParcelType>& il = il_();
-
-    const label n = parcels.size();
-    const label nCells = this->mesh_.nCells();
-
     // Parcels per cell (counting sort)
+    const label nCells = this->mesh_.nCells();
     cellStart_.setSize(nCells + 1);
     cellStart_ = 0;
     for (const ParcelType* p : parcels)
@@ -115,18 +104,14 @@ void Foam::InteractionListsPairSearch<ParcelType>::search
     {
         cellStart_[celli + 1] += cellStart_[celli];
     }
-    cellParcels_.setSize(n);
+    cellParcels_.setSize(parcels.size());
+    labelList fill(SubList<label>(cellStart_, nCells));
+    forAll(parcels, i)
     {
-        labelList fill(SubList<label>(cellStart_, nCells));
-        forAll(parcels, i)
-        {
-            cellParcels_[fill[parcels[i]->cell()]++] = i;
-        }
+        cellParcels_[fill[parcels[i]->cell()]++] = i;
     }
 
-    // Referred parcels: send now, receive after the real-real search
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    const label startOfRequests = Pstream::nRequests();
+    // The occupancy that the interaction lists send
     occupancy_.setSize(nCells);
     for (label celli = 0; celli < nCells; ++celli)
     {
@@ -137,10 +122,17 @@ void Foam::InteractionListsPairSearch<ParcelType>::search
             cellList.append(parcels[cellParcels_[a]]);
         }
     }
-    il.sendReferredData(occupancy_, pBufs);
+}
 
-    // Real-real: same cell and the direct interaction list
-    const labelListList& dil = il.dil();
+
+template<class ParcelType>
+void Foam::InteractionListsPairSearch<ParcelType>::visitReal
+(
+    const labelListList& dil,
+    const typename PairSearch<ParcelType>::visitor& visit
+) const
+{
+    // Same cell and the direct interaction list
     forAll(dil, celli)
     {
         for (label a = cellStart_[celli]; a < cellStart_[celli + 1]; ++a)
@@ -166,10 +158,17 @@ void Foam::InteractionListsPairSearch<ParcelType>::search
             }
         }
     }
+}
 
-    // Real-referred
-    il.receiveReferredData(pBufs, startOfRequests);
 
+template<class ParcelType>
+void Foam::InteractionListsPairSearch<ParcelType>::visitReferred
+(
+    const InteractionLists<ParcelType>& il,
+    const label n,
+    const typename PairSearch<ParcelType>::visitor& visit
+)
+{
     const labelListList& ril = il.ril();
     const List<IDLList<ParcelType>>& referred = il.referredParticles();
 
@@ -198,6 +197,34 @@ void Foam::InteractionListsPairSearch<ParcelType>::search
             }
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+void Foam::InteractionListsPairSearch<ParcelType>::search
+(
+    const UList<ParcelType*>& parcels,
+    const UList<point>& x1,
+    const scalar distance,
+    const scalar,
+    const typename PairSearch<ParcelType>::visitor& visit
+)
+{
+    checkLists(distance);
+    InteractionLists<ParcelType>& il = il_();
+    sortByCell(parcels);
+
+    // Referred parcels: send now, receive after the real-real search
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    const label startOfRequests = Pstream::nRequests();
+    il.sendReferredData(occupancy_, pBufs);
+
+    visitReal(il.dil(), visit);
+
+    il.receiveReferredData(pBufs, startOfRequests);
+    visitReferred(il, parcels.size(), visit);
 }
 
 

@@ -48,31 +48,20 @@ Foam::boundBox Foam::ParticleGridPairSearch<ParcelType>::sweptBox
 
 
 template<class ParcelType>
-void Foam::ParticleGridPairSearch<ParcelType>::refer
+bool Foam::ParticleGridPairSearch<ParcelType>::targets
 (
-    const UList<ParcelType*>& parcels,
-    const UList<point>& x1,
-    const scalar inflate,
-    const vector& spanMax
-)
+    const vector& spanMax,
+    const boundBox& interior,
+    DynamicList<label>& targetProc,
+    DynamicList<label>& targetShift
+) const
 {
+    // A box reaches at most spanMax from its end position, the partner's
+    // too
     const label me = Pstream::myProcNo();
     const boundBox& own = procBb_[me];
-
-    images_.clear();
-    received_.clear();
-    received_.setSize(Pstream::nProcs());
-    referred_.clear();
-    referredX1_.clear();
-
-    // The (processor, shift) targets within reach of this box: a box
-    // reaches at most spanMax from its end position, the partner's too
     const vector r3(2*spanMax);
-    DynamicList<label> targetProc;
-    DynamicList<label> targetShift;
     bool interiorFree = true;
-    const vector i3(1.01*r3 + 1e-9*own.span());
-    const boundBox interior(own.min() + i3, own.max() - i3);
 
     forAll(procBb_, k)
     {
@@ -106,6 +95,83 @@ void Foam::ParticleGridPairSearch<ParcelType>::refer
             }
         }
     }
+    return interiorFree;
+}
+
+
+template<class ParcelType>
+void Foam::ParticleGridPairSearch<ParcelType>::exchange
+(
+    List<IDLList<ParcelType>>& sendParcels,
+    const List<DynamicList<point>>& sendX1
+)
+{
+    const label me = Pstream::myProcNo();
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(sendParcels, k)
+    {
+        if (k != me && sendParcels[k].size())
+        {
+            UOPstream os(k, pBufs);
+            os << sendX1[k] << sendParcels[k];
+        }
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    forAll(received_, k)
+    {
+        if (k == me || !recvSizes[k])
+        {
+            continue;
+        }
+        UIPstream is(k, pBufs);
+        const List<point> theirX1(is);
+        received_.set
+        (
+            k,
+            new IDLList<ParcelType>
+            (
+                is, typename ParcelType::iNew(this->mesh_)
+            )
+        );
+        label q = 0;
+        for (const ParcelType& p : received_[k])
+        {
+            referred_.append(&p);
+            referredX1_.append(theirX1[q++]);
+        }
+    }
+}
+
+
+template<class ParcelType>
+void Foam::ParticleGridPairSearch<ParcelType>::refer
+(
+    const UList<ParcelType*>& parcels,
+    const UList<point>& x1,
+    const scalar inflate,
+    const vector& spanMax
+)
+{
+    const label me = Pstream::myProcNo();
+    const boundBox& own = procBb_[me];
+
+    images_.clear();
+    received_.clear();
+    received_.setSize(Pstream::nProcs());
+    referred_.clear();
+    referredX1_.clear();
+
+    // The (processor, shift) targets within reach of this box, and the
+    // interior whose particles reach none of them (if none reaches in)
+    const vector r3(2*spanMax);
+    const vector i3(1.01*r3 + 1e-9*own.span());
+    const boundBox interior(own.min() + i3, own.max() - i3);
+    DynamicList<label> targetProc;
+    DynamicList<label> targetShift;
+    const bool interiorFree =
+        targets(spanMax, interior, targetProc, targetShift);
 
     // Per processor: the copies and their end positions
     List<IDLList<ParcelType>> sendParcels(Pstream::nProcs());
@@ -155,45 +221,9 @@ void Foam::ParticleGridPairSearch<ParcelType>::refer
         }
     }
 
-    if (!Pstream::parRun())
+    if (Pstream::parRun())
     {
-        return;
-    }
-
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    forAll(sendParcels, k)
-    {
-        if (k != me && sendParcels[k].size())
-        {
-            UOPstream os(k, pBufs);
-            os << sendX1[k] << sendParcels[k];
-        }
-    }
-    labelList recvSizes;
-    pBufs.finishedSends(recvSizes);
-
-    forAll(received_, k)
-    {
-        if (k == me || !recvSizes[k])
-        {
-            continue;
-        }
-        UIPstream is(k, pBufs);
-        const List<point> theirX1(is);
-        received_.set
-        (
-            k,
-            new IDLList<ParcelType>
-            (
-                is, typename ParcelType::iNew(this->mesh_)
-            )
-        );
-        label q = 0;
-        for (const ParcelType& p : received_[k])
-        {
-            referred_.append(&p);
-            referredX1_.append(theirX1[q++]);
-        }
+        exchange(sendParcels, sendX1);
     }
 }
 

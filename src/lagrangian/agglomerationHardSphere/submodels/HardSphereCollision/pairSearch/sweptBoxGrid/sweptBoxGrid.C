@@ -69,7 +69,17 @@ void Foam::sweptBoxGrid::build
         return;
     }
 
+    setSpacing(spacing);
+    sortIntoBuckets(countInsertions());
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::sweptBoxGrid::setSpacing(const scalar spacing)
+{
     // Origin, extent and spacing
+    const label n = boxes_.size();
     point lo(boxes_[0].min[0], boxes_[0].min[1], boxes_[0].min[2]);
     point hi(boxes_[0].max[0], boxes_[0].max[1], boxes_[0].max[2]);
     vector meanExtent(Zero);
@@ -97,25 +107,23 @@ void Foam::sweptBoxGrid::build
         invSpacing_[c] = 1/h;
     }
     origin_ = lo;
+}
 
-    // Bin range of a box (computed in each pass rather than stored)
-    FixedList<label, 6> r;
-    auto binRange = [&](const label i)
-    {
-        for (direction c = 0; c < 3; ++c)
-        {
-            r[c] = index(boxes_[i].min[c], c);
-            r[c + 3] = index(boxes_[i].max[c], c);
-        }
-    };
 
+Foam::label Foam::sweptBoxGrid::countInsertions() const
+{
     label nInsert = 0;
     forAll(boxes_, i)
     {
-        binRange(i);
+        const FixedList<label, 6> r(binRange(i));
         nInsert += (r[3] - r[0] + 1)*(r[4] - r[1] + 1)*(r[5] - r[2] + 1);
     }
+    return nInsert;
+}
 
+
+void Foam::sweptBoxGrid::sortIntoBuckets(const label nInsert)
+{
     // Buckets: a power of 2 >= the number of insertions
     label bits = 4;
     while ((label(1) << bits) < nInsert)
@@ -133,7 +141,7 @@ void Foam::sweptBoxGrid::build
     start_ = 0;
     forAll(boxes_, i)
     {
-        binRange(i);
+        const FixedList<label, 6> r(binRange(i));
         for (label bi = r[0]; bi <= r[3]; ++bi)
         {
             for (label bj = r[1]; bj <= r[4]; ++bj)
@@ -153,9 +161,9 @@ void Foam::sweptBoxGrid::build
 
     items_.setSize(nInsert);
     tags_.setSize(nInsert);
-    for (label i = n - 1; i >= 0; --i)
+    for (label i = boxes_.size() - 1; i >= 0; --i)
     {
-        binRange(i);
+        const FixedList<label, 6> r(binRange(i));
         for (label bi = r[0]; bi <= r[3]; ++bi)
         {
             for (label bj = r[1]; bj <= r[4]; ++bj)
