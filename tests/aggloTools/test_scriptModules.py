@@ -6,6 +6,7 @@ search-path edit), each once; a script whose import is not a sibling
 tutorial's package is imported by its dotted name, its package found in
 the tutorial's folder."""
 
+import os
 import subprocess
 import sys
 
@@ -71,3 +72,29 @@ def test_a_folder_without_init_is_not_a_package(tmp_path):
                        r"__init__\.py\)"):
         runner._package(tmp_path / "zzPlain")
     assert "zzPlain" not in sys.modules
+
+
+def test_package_command_runs_a_package_module_from_any_folder(tmp_path,
+                                                               monkeypatch):
+    """runner.package_command: python -m of a tutorial's package module
+    run in another folder (a case) finds the package: its folder goes
+    first on PYTHONPATH, once, before what was there."""
+    tut = tmp_path / "tut"
+    (tut / "zzPkg").mkdir(parents=True)
+    (tut / "zzPkg" / "__init__.py").write_text("")
+    (tut / "zzPkg" / "hello.py").write_text(
+        "import sys\nprint('hello', *sys.argv[1:])\n")
+    case = tmp_path / "case"
+    case.mkdir()
+    monkeypatch.setenv("PYTHONPATH", "/elsewhere")
+    cmd = runner.package_command(tut, "zzPkg.hello", "a", 1)
+    runner.package_command(tut, "zzPkg.hello")
+    assert os.environ["PYTHONPATH"].split(os.pathsep) == [str(tut),
+                                                          "/elsewhere"]
+    assert cmd[1:] == ["-m", "zzPkg.hello", "a", "1"]
+    res = subprocess.run(cmd, cwd=case, capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    assert res.stdout.split() == ["hello", "a", "1"]
+    monkeypatch.delenv("PYTHONPATH")
+    res = subprocess.run(cmd, cwd=case, capture_output=True, text=True)
+    assert res.returncode != 0 and "No module named 'zzPkg'" in res.stderr
