@@ -75,24 +75,41 @@ def _siblings(path):
     return [f for f in found if f.is_file() and f != path]
 
 
+def _loaded(name, path):
+    """The module `name` if it was imported from the file at path."""
+    import sys
+    module = sys.modules.get(name)
+    if getattr(module, "__file__", None) == str(path):
+        return module
+    return None
+
+
+def _load(name, path, search=None):
+    """The file at path imported as the module `name` and kept in
+    sys.modules (a package's __init__.py with search, the folder its
+    modules are found in)."""
+    import importlib.util
+    import sys
+    spec = importlib.util.spec_from_file_location(
+        name, path, submodule_search_locations=search)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
 def _script_module(path, name):
     """The Python script at path imported as the module `name` (kept in
     sys.modules: a second call returns the same module), after the
     scripts of its folder that it imports (found in its source: no list
     to keep, no search-path edit; the import graph has no cycle, a test
     checks it)."""
-    import importlib.util
-    import sys
-    if name in sys.modules and \
-            getattr(sys.modules[name], "__file__", None) == str(path):
-        return sys.modules[name]
+    module = _loaded(name, path)
+    if module is not None:
+        return module
     for sibling in _siblings(path):
         _script_module(sibling, sibling.stem)
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
+    return _load(name, path)
 
 
 def tutorial_module(tutorial, name):
@@ -113,20 +130,13 @@ def tutorial_module(tutorial, name):
 def _package(folder):
     """The package in folder imported under its folder's name (kept in
     sys.modules; its modules found in it, no search-path edit)."""
-    import importlib.util
-    import sys
     name, init = folder.name, folder / "__init__.py"
-    if name in sys.modules and \
-            getattr(sys.modules[name], "__file__", None) == str(init):
-        return sys.modules[name]
+    module = _loaded(name, init)
+    if module is not None:
+        return module
     if not init.is_file():
         raise ImportError(f"{folder}: not a package (no __init__.py)")
-    spec = importlib.util.spec_from_file_location(
-        name, init, submodule_search_locations=[str(folder)])
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
+    return _load(name, init, [str(folder)])
 
 
 def bench_module(script):
