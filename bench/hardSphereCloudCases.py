@@ -70,12 +70,11 @@ def make_case(case, N, density, search="particleGrid", particles=True,
                  for i in order]
     boxcase.box_case(case, L=(Lb,) * 3, n=(nc,) * 3, kinds=("cyclic",) * 3,
                      particles=parts, dt=DT, end_time=steps * DT,
-                     write_interval=10 * steps, agglomeration="EAM",
-                     forces="{ sphereDrag; gravity; }",
-                     gravity=(0, -9.81, 0), rotation=False,
-                     hard_sphere=boxcase.KERNEL
-                     + f"    pairSearch {search};\n"
-                     + "    agglomerationModel EAM;\n    walls {}\n")
+                     write_interval=10 * steps, gravity=(0, -9.81, 0),
+                     hard_sphere=boxcase.kernel("EAM", walls={},
+                                                pairSearch=search),
+                     cloud={"subModels": {"particleForces": {
+                         "sphereDrag": "", "gravity": ""}}})
     return nc**3
 
 

@@ -42,7 +42,7 @@ def raised_digits(tmp_path_factory, foam_env):
              for i in range(3)]
     whole = tmp_path_factory.mktemp("raisedDigits") / "whole"
     boxcase.box_case(whole, particles=parts, dt=1 / 3, end_time=17.0,
-                     write_interval=1, agglomeration="EAM")
+                     write_interval=1, hard_sphere=boxcase.kernel("EAM"))
     run([foam_bin("foamDictionary"), "-entry", "timePrecision", "-set", "2",
          "system/controlDict"], whole, "log.foamDictionary")
     boxcase.run_case(whole)

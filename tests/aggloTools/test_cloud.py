@@ -35,7 +35,7 @@ def make(case, fmt, decompose=(1, 1, 1)):
     boxcase.box_case(case, L=L, n=(5, 4, 3), particles=particles(),
                      kinds=("cyclic", "wall", "cyclic"), dt=DT,
                      end_time=STEPS * DT, write_interval=1,
-                     write_format=fmt, agglomeration="EAM",
+                     write_format=fmt, hard_sphere=boxcase.kernel("EAM"),
                      decompose=decompose)
     return case
 

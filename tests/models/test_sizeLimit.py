@@ -29,15 +29,12 @@ def size_limit_case(case):
     parts = [dict(x=(x, 5e-4, 5e-4), U=(0, 0, 0), d=DP * n ** (1 / 3),
                   rho=RHO_P, nPrimary=n, id=i)
              for i, (x, n) in enumerate(zip((2e-4, 5e-4, 8e-4), SIZES))]
-    hs = boxcase.KERNEL.replace("structureModel CSM;",
-                                "structureModel VSM;") \
-        + ("    agglomerationModel EAM;\n"
-           f"    walls {{ \".*\" {boxcase.WALL} }}\n")
-    brk = (f"breakupModel sizeLimit;\n    sizeLimitCoeffs {{ nMax {N_MAX};"
-           " gap 0.5; eventLog true; }")
+    hs = boxcase.kernel("EAM", structureModel="VSM")
+    brk = {"subModels": {"breakupModel": "sizeLimit", "sizeLimitCoeffs": {
+        "nMax": N_MAX, "gap": 0.5, "eventLog": True}}}
     box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4), particles=parts,
              dt=1e-6, end_time=STEPS * 1e-6, write_interval=4,
-             hard_sphere=hs, breakup=brk)
+             hard_sphere=hs, cloud=brk)
     cd = case / "system/controlDict"
     cd.write_text(cd.read_text() + 'libs ("libaggloTestModels.so");\n')
     return case

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from aggloTools import eventlog, placement
-from aggloTools.boxcase import box_case, run_case
+from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.stats import stats_rows
 from aggloTools.times import time_dirs
 
@@ -36,7 +36,7 @@ def stick_gas(case):
              "} eventLog true")
     box_case(case, L=(LB,) * 3, n=(5, 5, 5),
              kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
-             end_time=8e-3, write_interval=40, agglomeration=model)
+             end_time=8e-3, write_interval=40, hard_sphere=kernel(model))
     cd = case / "system/controlDict"
     cd.write_text(cd.read_text() + 'libs ("libaggloTestModels.so");\n')
     return case

@@ -41,7 +41,8 @@ import sys
 import time
 from pathlib import Path
 
-from aggloTools import bendmesh, decomposition, runtimes, stages, times
+from aggloTools import (bendmesh, boxcase, decomposition, runtimes, stages,
+                        times)
 from aggloTools.progress import line, solver_progress
 from aggloTools.runner import foam_bin
 from aggloTools.times import last_time
@@ -106,49 +107,40 @@ def particle_runs(p):
     agglomeration model)."""
     if "sizes" in p:
         lo, hi = p["sizes"]
-        return {p["model"]: ("type uniform; uniformDistribution "
-                             f"{{ minValue {lo!r}; maxValue {hi!r}; }}",
+        return {p["model"]: ({"type": "uniform", "uniformDistribution":
+                              {"minValue": lo, "maxValue": hi}},
                              p["model"])}
-    return {case_name(st): ("type fixedValue; fixedValueDistribution "
-                            f"{{ value {diameter(st)!r}; }}", "none")
+    return {case_name(st): ({"type": "fixedValue", "fixedValueDistribution":
+                             {"value": diameter(st)}}, "none")
             for st in p["stokes"]}
 
 
-ESCAPE = ("patchInteractionModel localInteraction;\n"
-          "    localInteractionCoeffs { patches ( \"(inlet|outlet)\" "
-          "{ type escape; } \"(inletPipe|bend|outletPipe)\" "
-          "{ type rebound; e 1; mu 0; } ); }")
+#: The pipe's ends let particles escape, its walls (where the collision
+#: model does not take them) rebound
+ESCAPE = {"patchInteractionModel": "localInteraction",
+          "localInteractionCoeffs": {
+              "patches": '( "(inlet|outlet)" { type escape; } '
+                         '"(inletPipe|bend|outletPipe)" '
+                         '{ type rebound; e 1; mu 0; } )'}}
 
 
 def stick(model):
     """The collision model's body: quartz, sticking walls, the
     agglomeration model (none: collisions only)."""
-    return ("    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.612985e9;"
-            " delta0 2e-10; rho0 2200; }\n"
-            "    particleCollision { en 0.97; et 0.44; muSt 0.94;"
-            " muKin 0.092; }\n    structureModel CSM;\n"
-            f"    agglomerationModel {model};\n"
-            "    walls { \"(inletPipe|bend|outletPipe)\" "
-            "{ wallModel stick; } }\n")
+    return boxcase.kernel(model, walls={
+        '"(inletPipe|bend|outletPipe)"': {"wallModel": "stick"}})
 
 
 def injector(p, sizes):
-    return f"""injectionModels
-    {{
-        inlet
-        {{
-            type            keyedPatchInjection;
-            patch           inlet;
-            SOI             0;
-            duration        {p['inject']!r};
-            parcelsPerSecond {p['parcels'] / p['inject']!r};
-            placement       flux;
-            massTotal       0;
-            parcelBasisType fixed;
-            nParticle       1;
-            sizeDistribution {{ {sizes} }}
-        }}
-    }}"""
+    """keyedPatchInjection at the inlet with the fluid's face flux: the
+    preset's parcels over its injection time, of the size distribution
+    sizes."""
+    return {"inlet": {
+        "type": "keyedPatchInjection", "patch": "inlet", "SOI": 0,
+        "duration": p["inject"],
+        "parcelsPerSecond": p["parcels"] / p["inject"],
+        "placement": "flux", "massTotal": 0, "parcelBasisType": "fixed",
+        "nParticle": 1, "sizeDistribution": sizes}}
 
 
 def build_flow(case, p):
@@ -158,7 +150,7 @@ def build_flow(case, p):
                        n_axial=p["n_axial"], ring_grading=p["grading"],
                        inlet_velocity=(0, 0, U_MEAN),
                        particles=[], hard_sphere="none",
-                       patch_interaction=ESCAPE,
+                       cloud={"subModels": ESCAPE},
                        dt=p["dt"], end_time=p["flow_end"],
                        write_interval=steps, frozen=False, nu=NU,
                        rho_f=RHO_F, tol=1e-7)
@@ -182,10 +174,13 @@ def build_particles(case, flow, p, sizes, model, ranks):
     bendmesh.pipe_case(case, g, n=p["n"], n_ring=p["n_ring"],
                        n_axial=p["n_axial"], ring_grading=p["grading"],
                        particles=[], hard_sphere=stick(model),
-                       patch_interaction=ESCAPE, dt=p["dt"], end_time=end,
-                       write_interval=steps, frozen=True, nu=NU,
-                       rho_f=RHO_F, forces="{ SchillerNaumannDrag; }",
-                       integration="analytical")
+                       dt=p["dt"], end_time=end, write_interval=steps,
+                       frozen=True, nu=NU, rho_f=RHO_F,
+                       cloud={"solution": {
+                           "integrationSchemes": {"U": "analytical"}},
+                           "subModels": {
+                               **ESCAPE, "particleForces": boxcase.DRAG,
+                               "injectionModels": injector(p, sizes)}})
     shutil.copytree(flow / "constant" / "polyMesh",
                     case / "constant" / "polyMesh", dirs_exist_ok=True)
     t = last_time(flow)
@@ -193,9 +188,6 @@ def build_particles(case, flow, p, sizes, model, ranks):
         shutil.copy(flow / t / f, case / "0" / f)
     shutil.rmtree(case / "0" / "lagrangian", ignore_errors=True)
     shutil.rmtree(case / "0" / "uniform", ignore_errors=True)
-    f = case / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace("injectionModels {}",
-                                       injector(p, sizes)))
     if ranks > 1:
         decomposition.scattered(case, ranks)
         stages.decompose(case)

@@ -63,21 +63,27 @@ PRESETS = {
 # The two series: the stresses of the mean shear only (the criterion's
 # prediction holds for them), and the model's default with drag too
 SERIES = {
-    "shear": "mechanisms (turbulence rotation); Cv 1; Ci 1;"
-             " rotationFactor 0.0625;",
-    "withDrag": "mechanisms (turbulence drag rotation); Cv 1; Ci 1; Cd 1;"
-                " rotationFactor 0.0625;",
+    "shear": {"mechanisms": ("turbulence", "rotation"), "Cv": 1, "Ci": 1,
+              "rotationFactor": 0.0625},
+    "withDrag": {"mechanisms": ("turbulence", "drag", "rotation"), "Cv": 1,
+                 "Ci": 1, "Cd": 1, "rotationFactor": 0.0625},
 }
 
 
 def breakup(series, reading):
-    """The break-up model's entries, its event log on."""
-    return ("breakupModel stressThreshold;\n    stressThresholdCoeffs {"
-            " strength { rumpfPrefactor 1.125;"
-            " coordination exactSmallRumpf; }"
-            f" stresses {{ {SERIES[series]} dissipation {reading}; }}"
-            " fragmentation { mode erosion; direction extensional;"
-            " gap 1e-3; tries 6; spin conserveL; } eventLog true; }")
+    """The cloud's drag, the fluid's torque and the break-up model's
+    entries, its event log on."""
+    coeffs = {
+        "strength": {"rumpfPrefactor": 1.125,
+                     "coordination": "exactSmallRumpf"},
+        "stresses": {**SERIES[series], "dissipation": reading},
+        "fragmentation": {"mode": "erosion", "direction": "extensional",
+                          "gap": 1e-3, "tries": 6, "spin": "conserveL"},
+        "eventLog": True}
+    return {"subModels": {"particleForces": boxcase.DRAG,
+                          "rotationModel": "fluidTorque",
+                          "breakupModel": "stressThreshold",
+                          "stressThresholdCoeffs": coeffs}}
 
 
 def build(case, series, reading, gamma, p):
@@ -96,12 +102,11 @@ def build(case, series, reading, gamma, p):
     boxcase.box_case(case, L=L, n=CELLS, kinds=("cyclic", "wall", "cyclic"),
                      particles=parts, dt=p["dt"], end_time=p["end"],
                      write_interval=round(p["write"] / p["dt"]),
-                     nu=c.nu, rho_f=c.rho_f, agglomeration="EAM",
+                     nu=c.nu, rho_f=c.rho_f,
+                     hard_sphere=boxcase.kernel("EAM"),
                      wall_velocity={"yMin": (-uw, 0, 0),
                                     "yMax": (uw, 0, 0)},
-                     forces="{ SchillerNaumannDrag; }", rotation=True,
-                     breakup=breakup(series, reading),
-                     write_format="binary")
+                     cloud=breakup(series, reading), write_format="binary")
     boxcase.write_internal_U(case, L, CELLS,
                              lambda x, y, z: (gamma * (y - L[1] / 2), 0, 0))
     assert steps > 0

@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from aggloTools import placement
-from aggloTools.boxcase import box_case
+from aggloTools.boxcase import box_case, kernel
 from aggloTools.cloud import read_cloud
 
 STATE = ("U", "omega", "d", "rho", "nPrimary", "origId", "origProcId",
@@ -56,14 +56,16 @@ def gas_particles(N, Lbox, phi, sigma, seed):
 
 
 def gas_kernel(en):
-    return ("    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.6e9;"
-            " delta0 2e-10; rho0 2200; }\n"
-            f"    particleCollision {{ en {en}; et 1; muSt 0; muKin 0; }}\n"
-            "    agglomerationModel none;\n    walls {}\n")
+    """A frictionless gas: normal restitution en, no agglomeration, no
+    walls (the structure model's entry left out)."""
+    return kernel(walls={}, structureModel=None,
+                  material={"pMax": 1.6e9},
+                  particleCollision={"en": en, "et": 1, "muSt": 0,
+                                     "muKin": 0})
 
 
 def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1),
-                      hard_sphere=""):
+                      hard_sphere=None):
     """300 quartz primaries at about 2 mm/s in a box periodic in x and z,
     walls in y: collisions, agglomerates (under EAM and MAM: seed 13) and
     wall impacts within 40 steps."""
@@ -77,8 +79,8 @@ def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1),
     box_case(case_dir, L=(Lb, Lb, Lb), n=(6, 6, 6),
              kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
              end_time=end_time, write_interval=write_interval,
-             agglomeration="EAM", decompose=decompose,
-             hard_sphere=hard_sphere)
+             hard_sphere=hard_sphere or kernel("EAM"),
+             decompose=decompose)
 
 
 def add_hard_sphere_entries(case_dir, entries):
@@ -119,7 +121,7 @@ def primaries_gas(case, model="EAM", log=True, decompose=(1, 1, 1),
              for i, (x, u) in enumerate(zip(xs, U))]
     box_case(case, L=(LB,) * 3, n=(6, 6, 6),
              kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
-             end_time=end, write_interval=write, agglomeration=model,
+             end_time=end, write_interval=write, hard_sphere=kernel(model),
              decompose=decompose)
     if log:
         f = case / "constant" / "kinematicCloudProperties"

@@ -12,7 +12,8 @@ presets and case settings in tests/tutorials/test_tutorialInput."""
 
 import pytest
 
-from aggloTools.boxcase import box_case, run_case
+from aggloTools.boxcase import box_case, kernel, run_case
+from aggloTools.foamfile import strip_comments
 from cloudBoxCases import PAIR, L, assert_fatal_naming
 
 EAM = "agglomerationModel EAM;"
@@ -89,8 +90,8 @@ CASES = {
     "Emissing": (MAT, MAT.replace("E 7.2e10; ", ""), "E"),
     "pMaxAndSigmaY": (MAT, MAT + " sigmaY 1.1e9;", "sigmaY"),
     "delta0Zero": ("delta0 2e-10;", "delta0 0;", "delta0"),
-    "rho0Negative": ("rho0 2200; }\n    particleCollision",
-                     "rho0 -2200; }\n    particleCollision", "rho0"),
+    "rho0Negative": ("rho0 2200; } particleCollision",
+                     "rho0 -2200; } particleCollision", "rho0"),
     # the collision model's own options
     "overlapTreatment": (EAM, EAM + " overlapTreatment apart;", "apart"),
     "encounterMemory": (EAM, EAM + " encounterMemory -1;",
@@ -220,12 +221,15 @@ SUBMODEL_CASES = {
 
 
 def edited_case(case_dir, old, new):
-    box_case(case_dir, L=(L, L, L), particles=PAIR, agglomeration="EAM",
+    """The pair's box case whose cloud dictionary, written on one line
+    (comments removed, white space one blank), has its text old replaced
+    by new."""
+    box_case(case_dir, L=(L, L, L), particles=PAIR, hard_sphere=kernel("EAM"),
              dt=1e-5, end_time=2e-5)
     f = case_dir / "constant" / "kinematicCloudProperties"
-    text = f.read_text()
+    text = " ".join(strip_comments(f.read_text()).split())
     assert old in text, old
-    f.write_text(text.replace(old, new, 1))
+    f.write_text(text.replace(old, new, 1) + "\n")
 
 
 def test_valid_case_runs(case_dir, foam_env):

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from aggloTools import placement, times
-from aggloTools.boxcase import box_case, run_case
+from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.cloud import cloud_dir, read_cloud, read_positions
 from aggloTools.runner import foam_bin, run
 from aggloTools.stats import stats_rows as stats
@@ -37,7 +37,7 @@ def gas(case_dir):
              in enumerate(zip(xs, U))]
     box_case(case_dir, L=(Lb,) * 3, n=(6, 6, 6), particles=parts,
              kinds=("cyclic", "wall", "cyclic"), dt=1e-4, end_time=4e-3,
-             agglomeration="EAM", decompose=(2, 1, 1))
+             hard_sphere=kernel("EAM"), decompose=(2, 1, 1))
     return len(parts)
 
 
@@ -228,7 +228,7 @@ def test_agglomerate_at_wall_across_processor_plane(case_dir, foam_env):
         c = case_dir / f"np{ranks}"
         box_case(c, L=(Lx, 1e-4, 1e-4), n=(8, 2, 2), particles=parts,
                  dt=1e-5, end_time=1e-5, decompose=(2, 1, 1),
-                 agglomeration="MAM", kinds=("wall", "wall", "wall"))
+                 hard_sphere=kernel("MAM"), kinds=("wall", "wall", "wall"))
         run_case(c, parallel=ranks)
         assert stats(c)[-1]["nAgg"] == 1
         out[ranks] = read_positions(cloud_dir(c, "1e-05") / "positions")

@@ -10,7 +10,7 @@ import re
 import numpy as np
 import pytest
 
-from aggloTools.boxcase import box_case, run_case
+from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.runner import foam_bin, run
 from aggloTools.stats import stats_rows as stats
 from cloudBoxCases import (D, add_hard_sphere_entries, cloud_state,
@@ -74,7 +74,7 @@ def oracle_cloud(case_dir, kind, decompose=(1, 1, 1)):
              for i, (x, u, d) in enumerate(zip(xs, U, ds))]
     box_case(case_dir, L=(Lb,) * 3, n=(6, 6, 6),
              kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
-             end_time=4e-3, write_interval=1, agglomeration="EAM",
+             end_time=4e-3, write_interval=1, hard_sphere=kernel("EAM"),
              decompose=decompose)
 
 

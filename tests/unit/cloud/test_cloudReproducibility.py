@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from aggloTools import placement
-from aggloTools.boxcase import box_case, run_case
+from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.cloud import cloud_dir, read_lagrangian, read_positions
 from aggloTools.runner import foam_bin, run
 from aggloTools.stats import stats_rows as stats
@@ -144,7 +144,7 @@ def test_cell_order_is_the_order_of_the_cells(case_dir, foam_env):
         box_case(c, L=(Lb,) * 3, n=(n,) * 3,
                  kinds=("cyclic", "wall", "cyclic"),
                  particles=parts, dt=1e-4, end_time=1e-4,
-                 agglomeration="EAM")
+                 hard_sphere=kernel("EAM"))
         with_cell_order(c, interval)
         run_case(c)
         t = last_time(c)

@@ -9,7 +9,7 @@ import shutil
 
 import pytest
 
-from aggloTools.boxcase import box_case, run_case
+from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.stats import stats_rows as stats
 from aggloTools.times import last_time
 from cloudBoxCases import (D, L, add_hard_sphere_entries, agglomerating_gas,
@@ -19,7 +19,7 @@ from cloudBoxCases import (D, L, add_hard_sphere_entries, agglomerating_gas,
 BAD = {
     "unknownModel": ("agglomerationModel EAM;", "agglomerationModel EAMX;",
                      "EAMX"),
-    "missingCoefficient": ("en 0.97; ", "", "en"),
+    "missingCoefficient": ("en 0.97;", "", "en"),
     "restitution": ("en 0.97;", "en 1.2;", "en"),
     "unknownWallModel": ("wallModel smooth;", "wallModel rough;", "rough"),
     "ghostAgglomerating": ("agglomerationModel EAM;",
@@ -41,7 +41,7 @@ BAD = {
 def test_bad_input_is_fatal(case_dir, foam_env, name):
     old, new, word = BAD[name]
     box_case(case_dir, L=(L, L, L), particles=pair_particles(3e-3, 0),
-             agglomeration="EAM", dt=1e-4, end_time=2e-4)
+             hard_sphere=kernel("EAM"), dt=1e-4, end_time=2e-4)
     f = case_dir / "constant" / "kinematicCloudProperties"
     text = f.read_text()
     assert old in text

@@ -12,7 +12,7 @@ import re
 
 import numpy as np
 
-from aggloTools import bendmesh
+from aggloTools import bendmesh, boxcase
 from aggloTools.cloud import read_mass_balance
 from aggloTools.fields import read_patch
 from aggloTools.mesh import Mesh
@@ -20,16 +20,11 @@ from aggloTools.times import last_time
 
 D = 12e-6
 M1 = 2200 * math.pi / 6 * D ** 3
-STICK = ("    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.612985e9;"
-         " delta0 2e-10; rho0 2200; }\n"
-         "    particleCollision { en 0.97; et 0.44; muSt 0.94;"
-         " muKin 0.092; }\n    structureModel CSM;\n"
-         "    agglomerationModel none;\n"
-         "    walls { \".*\" { wallModel stick; } }\n")
-ESCAPE = ("patchInteractionModel localInteraction;\n"
-          "    localInteractionCoeffs { patches ( \"(inlet|outlet)\" "
-          "{ type escape; } \".*Pipe|bend\" { type rebound; e 1; mu 0; } )"
-          "; }")
+STICK = boxcase.kernel(walls={'".*"': {"wallModel": "stick"}})
+ESCAPE = {"patchInteractionModel": "localInteraction",
+          "localInteractionCoeffs": {
+              "patches": '( "(inlet|outlet)" { type escape; } '
+                         '".*Pipe|bend" { type rebound; e 1; mu 0; } )'}}
 
 
 def faces_of(case, patch):
@@ -50,7 +45,7 @@ def deposits(case, patch):
 def run(case, g, particles, ranks=0, **kw):
     """ranks 2: the pipe cut along y = 0 (through every cross-section)."""
     bendmesh.pipe_case(case, g, particles=particles, hard_sphere=STICK,
-                       patch_interaction=ESCAPE,
+                       cloud={"subModels": ESCAPE},
                        ranks=(1, 2, 1) if ranks == 2 else (1, 1, 1), **kw)
     bendmesh.run_pipe_case(case, g, parallel=ranks)
     return case

@@ -17,8 +17,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from aggloTools.boxcase import KERNEL, box_case, run_case
+from aggloTools import boxcase
+from aggloTools.boxcase import box_case, run_case
 from aggloTools.cloud import cloud_dir, read_positions
+from aggloTools.foamfile import dict_text
 from aggloTools.runner import foam_bin
 from aggloTools.stats import stats_rows as stats
 from aggloTools.times import last_time
@@ -46,7 +48,7 @@ def kernel(tmp, model, p1, p2):
         f"nPrimary 1; }}\n"
         for k, (x, p) in ((1, (x1, p1)), (2, (x2, p2))))
     f = Path(tmp) / "collideDict"
-    f.write_text(KERNEL + f"agglomerationModel {model};\n" + body)
+    f.write_text(dict_text({**boxcase.kernel(model), "walls": None}) + body)
     res = subprocess.run([foam_bin("hardSphereCollide"), str(f)],
                          capture_output=True, text=True)
     assert res.returncode == 0, res.stderr
@@ -70,7 +72,7 @@ def run_pair(case_dir, name, kinds=("wall", "wall", "wall"), shift=0.0,
         for p in parts:
             p["x"] = ((p["x"][0]) % L, p["x"][1], p["x"][2])
     box_case(case_dir, L=(L, L, L), n=(4, 4, 4), kinds=kinds, dt=1e-4,
-             end_time=1e-3, particles=parts, agglomeration=model,
+             end_time=1e-3, particles=parts, hard_sphere=boxcase.kernel(model),
              decompose=decompose)
     run_case(case_dir, parallel=parallel)
     return parts, cloud_state(case_dir, last_time(case_dir))

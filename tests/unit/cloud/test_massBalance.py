@@ -13,7 +13,7 @@ import shutil
 
 import numpy as np
 
-from aggloTools.boxcase import KERNEL, box_case, run_case
+from aggloTools.boxcase import WALL, box_case, kernel, run_case
 from aggloTools.cloud import read_mass_balance, read_record
 from aggloTools.fields import read_patch
 from aggloTools.mesh import Mesh
@@ -24,14 +24,9 @@ from cloudBoxCases import D, L, agglomerating_gas, cloud_state
 #: The mass of one 12 um quartz primary [kg]
 M1 = 2200 * math.pi / 6 * D ** 3
 
-SMOOTH = ("{ wallModel smooth; smoothCoeffs { en 0.8; et 0.4; muSt 0.3;"
-          " muKin 0.15; } }")
-
-
-def hard_sphere(walls, extra="", agglomeration="none"):
+def hard_sphere(walls, agglomeration="none", **changes):
     """The collision model's body with the given walls entries."""
-    return (KERNEL + f"    agglomerationModel {agglomeration};\n"
-            f"    {extra}\n    walls {{ {walls} }}\n")
+    return kernel(agglomeration, walls=walls, **changes)
 
 
 def patch_faces(case, patch):
@@ -63,8 +58,8 @@ def single_deposit(case_dir, extra):
     x0 = np.array([0.3 * L, 0.5 * D + 3.3e-6, 0.7 * L])
     box_case(case_dir, L=(L, L, L), particles=[dict(x=x0, U=U0)],
              dt=1e-4, end_time=1e-3,
-             hard_sphere=hard_sphere(f'yMin {{ wallModel stick; }} ".*" '
-                                     f'{SMOOTH}', extra))
+             hard_sphere=hard_sphere({"yMin": {"wallModel": "stick"},
+                                      '".*"': WALL}, **extra))
     run_case(case_dir)
     return case_dir, x0, U0
 
@@ -91,14 +86,14 @@ def check_single_deposit(case, x_contact):
 def test_deposit_at_one_radius(case_dir, foam_env):
     """Contact at one radius (the default): found at the end of step 4
     (the centre 5.3 um from the wall), deposited on the face below."""
-    case, x0, U0 = single_deposit(case_dir, "")
+    case, x0, U0 = single_deposit(case_dir, {})
     check_single_deposit(case, x0 + 4e-4 * U0 * np.array([1, 0, 1]))
 
 
 def test_deposit_of_a_centre_on_the_wall(case_dir, foam_env):
     """wallContact centre: deposited during the tracking where the centre
     crosses the wall (t = 0.93 ms)."""
-    case, x0, U0 = single_deposit(case_dir, "wallContact centre;")
+    case, x0, U0 = single_deposit(case_dir, {"wallContact": "centre"})
     check_single_deposit(case, x0 + 9.3e-4 * U0)
 
 
@@ -110,9 +105,11 @@ def test_escape_through_an_open_patch(case_dir, foam_env):
              dict(x=(0.5 * L, 0.5 * L, 0.5 * L), U=(0, 0, 0), id=1)]
     box_case(case_dir, L=(L, L, L), kinds=("patch", "wall", "wall"),
              particles=parts, dt=1e-4, end_time=1e-3,
-             patch_interaction="patchInteractionModel localInteraction;\n"
-             "    localInteractionCoeffs { patches ( \"x.*\" { type escape; }"
-             " \".*\" { type rebound; e 1; mu 0; } ); }")
+             cloud={"subModels": {
+                 "patchInteractionModel": "localInteraction",
+                 "localInteractionCoeffs": {
+                     "patches": '( "x.*" { type escape; } ".*" '
+                                '{ type rebound; e 1; mu 0; } )'}}})
     run_case(case_dir)
     t = last_time(case_dir)
     bal = read_mass_balance(case_dir, t)
@@ -126,7 +123,7 @@ def test_escape_through_an_open_patch(case_dir, foam_env):
     assert list(state["origId"]) == [1]
 
 
-STICKY = hard_sphere('"y.*" { wallModel stick; }', agglomeration="EAM")
+STICKY = hard_sphere({'"y.*"': {"wallModel": "stick"}}, "EAM")
 
 
 def sticky_gas(case, end_time, write_interval, decompose=(1, 1, 1)):

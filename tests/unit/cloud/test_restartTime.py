@@ -33,7 +33,7 @@ def test_restart_keeps_the_stored_time(case_dir, foam_env):
                   id=i) for i in range(6)]
     whole = case_dir / "whole"
     boxcase.box_case(whole, particles=parts, dt=DT, end_time=6 * DT,
-                     write_interval=3, agglomeration="EAM")
+                     write_interval=3, hard_sphere=boxcase.kernel("EAM"))
     run([foam_bin("foamDictionary"), "-entry", "timePrecision", "-set", "4",
          "system/controlDict"], whole, "log.foamDictionary")
     boxcase.run_case(whole)

@@ -20,6 +20,7 @@ import pytest
 from aggloTools import boxcase
 from aggloTools.cloud import cloud_dir, read_lagrangian, read_positions
 from aggloTools.fields import read_internal
+from aggloTools.foamfile import merged
 from aggloTools.times import last_time
 
 NU, RHO_F = 1.5e-5, 1.2
@@ -56,7 +57,7 @@ def test_terminal_velocity_schiller_naumann(case_dir, foam_env):
                      particles=[dict(x=(0.01, 0.09, 0.01), U=(0, 0, 0), d=d,
                                     rho=rho_p)],
                      dt=dt, end_time=200 * dt, write_interval=200,
-                     forces="{ SchillerNaumannDrag; gravity; }",
+                     cloud=forces({**boxcase.DRAG, "gravity": ""}),
                      gravity=(0, -g, 0), nu=NU, rho_f=RHO_F)
     boxcase.run_case(case_dir)
     U = lag(case_dir, times(case_dir)[-1], "U")[0]
@@ -75,6 +76,12 @@ def test_terminal_velocity_schiller_naumann(case_dir, foam_env):
 # ------------------------------------------------------- Couette helpers
 
 L_C, N_C = (0.01, 0.01, 0.005), (5, 10, 2)
+
+
+def forces(particle_forces, rotation="none"):
+    """The cloud's particle forces and rotation model."""
+    return {"subModels": {"particleForces": particle_forces,
+                          "rotationModel": rotation}}
 
 
 def couette_case(case, gamma, particles, dt, steps, write=1, **kw):
@@ -100,7 +107,7 @@ def test_spin_relaxes_to_half_vorticity(case_dir, foam_env):
     couette_case(case_dir, gamma,
                  [dict(x=(0.005, 0.005, 0.0025), U=(0, 0, 0), d=d, rho=rho_p,
                        omega=(300.0, 0, 0))],
-                 dt, 40, forces="{ SchillerNaumannDrag; }", rotation=True)
+                 dt, 40, cloud=forces(boxcase.DRAG, "fluidTorque"))
     boxcase.run_case(case_dir)
     ts = times(case_dir)
     t = np.array([float(x) for x in ts])
@@ -125,7 +132,7 @@ def test_spin_relaxes_to_half_vorticity(case_dir, foam_env):
 
 # ---------------------------------------------------------------- lift
 
-def lift_case(case, forces, omega_p, gamma, us):
+def lift_case(case, drag_lift, omega_p, gamma, us):
     """One particle at y' = 2 mm in Couette flow (or still fluid), slip us
     along x; one step of dt = tau_p/1000."""
     d, rho_p = 100e-6, 2500.0
@@ -136,7 +143,7 @@ def lift_case(case, forces, omega_p, gamma, us):
     couette_case(case, gamma,
                  [dict(x=(0.005, y, 0.0025), U=(uf - us, 0, 0), d=d,
                        rho=rho_p, omega=omega_p)],
-                 dt, 1, forces=forces)
+                 dt, 1, cloud=forces(drag_lift))
     boxcase.run_case(case)
     U1 = lag(case, times(case)[-1], "U")[0]
     # Euler-implicit step: dv_y = (F_y/m) dt/(1 + b dt), b = f_D/tau_p
@@ -148,8 +155,9 @@ def lift_case(case, forces, omega_p, gamma, us):
 
 def test_saffman_mei_lift(case_dir, foam_env):
     gamma, us = 1000.0, 0.5
-    Fy, d = lift_case(case_dir, "{ SchillerNaumannDrag; "
-                      "SaffmanMeiLiftForce { U U; } }", (0, 0, 0), gamma, us)
+    Fy, d = lift_case(case_dir, {**boxcase.DRAG,
+                                 "SaffmanMeiLiftForce": {"U": "U"}},
+                      (0, 0, 0), gamma, us)
     # doc/models.md 8.2: F = 1.615 d^2 (rho mu)^1/2 |w|^-1/2 f_Mei (u_s x w)
     rep = us * d / NU
     res = gamma * d**2 / NU
@@ -166,8 +174,9 @@ def test_rotation_lift(case_dir, foam_env):
     """Still fluid, particle moving at 0.5 m/s and spinning at 500 1/s:
     Omega = -omega_p, Re_p = 3.3, Re_R = 0.33 (Oesterle & Bui Dinh)."""
     us, wp = 0.5, 500.0
-    Fy, d = lift_case(case_dir, "{ SchillerNaumannDrag; rotationLift "
-                      "{ model OesterleBuiDinh; } }", (0, 0, wp), 0.0, us)
+    Fy, d = lift_case(case_dir, {**boxcase.DRAG, "rotationLift":
+                                 {"model": "OesterleBuiDinh"}},
+                      (0, 0, wp), 0.0, us)
     # u_p = (-us, 0, 0): u_s = (us, 0, 0), Omega = (0, 0, -wp),
     # Omega x u_s = (0, -us wp, 0) (Magnus: omega_p x (u_p - u_f))
     rep = us * d / NU
@@ -182,9 +191,26 @@ def test_rotation_lift(case_dir, foam_env):
 
 # ----------------------------------------------------------------- SGS
 
-SMAG = ("simulationType LES;\nLES { LESModel Smagorinsky; turbulence on;"
-        " printCoeffs on; delta cubeRootVol; cubeRootVolCoeffs"
-        " { deltaCoeff 1; } SmagorinskyCoeffs { Ck 0.094; Ce 1.048; } }")
+SMAG = {"simulationType": "LES",
+        "LES": {"LESModel": "Smagorinsky", "turbulence": "on",
+                "printCoeffs": "on", "delta": "cubeRootVol",
+                "cubeRootVolCoeffs": {"deltaCoeff": 1},
+                "SmagorinskyCoeffs": {"Ck": 0.094, "Ce": 1.048}}}
+
+
+def tracers(seed, beta_c, reflection):
+    """Drag, Pozorski-Apte's dispersion (Smagorinsky's nu_t, the given
+    seed, beta_C and wall reflection) and, instead of collisions (tracers
+    move further per step than the pair search sees), the stock rebound
+    at walls."""
+    return {"subModels": {
+        "particleForces": boxcase.DRAG,
+        "dispersionModel": "PozorskiApte",
+        "PozorskiApteCoeffs": {"kSgsSource": "nut", "Ck": 0.094, "CT": 1,
+                               "betaC": beta_c, "seed": seed,
+                               "wallReflection": reflection},
+        "patchInteractionModel": "standardWallInteraction",
+        "standardWallInteractionCoeffs": {"type": "rebound"}}}
 
 
 def add_nut(case):
@@ -215,15 +241,8 @@ def test_sgs_variance_and_time_scale(case_dir, foam_env):
     # tracers: no collisions (their displacement per step exceeds half the
     # period, beyond what the pair search can see); stock rebound at walls
     couette_case(case_dir, gamma, parts, dt, 60, write=1,
-                 hard_sphere="none",
-                 patch_interaction="patchInteractionModel "
-                 "standardWallInteraction;\n    "
-                 "standardWallInteractionCoeffs { type rebound; }",
-                 forces="{ SchillerNaumannDrag; }", turbulence=SMAG,
-                 dispersion="dispersionModel PozorskiApte;\n"
-                 "    PozorskiApteCoeffs { kSgsSource nut; Ck 0.094; CT 1;"
-                 " betaC 0; seed 3;"
-                 " wallReflection false; }")
+                 hard_sphere="none", turbulence=SMAG,
+                 cloud=tracers(3, 0, False))
     add_nut(case_dir)
     boxcase.run_case(case_dir)
     ts = times(case_dir)
@@ -271,11 +290,12 @@ def test_two_way_coupling_conserves_momentum(case_dir, foam_env):
     boxcase.box_case(case_dir, L=L, n=n, kinds=("cyclic",) * 3,
                      particles=parts, dt=dt, end_time=40 * dt,
                      write_interval=40,
-                     forces="{ SchillerNaumannDrag; }", rotation=True,
-                     coupled=True, frozen=False, tol=1e-13,
-                     source_scheme="explicit 1", nu=NU, rho_f=RHO_F,
-                     hard_sphere=boxcase.KERNEL
-                     + "    agglomerationModel none;\n    walls {}\n")
+                     frozen=False, tol=1e-13, nu=NU, rho_f=RHO_F,
+                     hard_sphere=boxcase.kernel(walls={}),
+                     cloud=merged(
+                         forces(boxcase.DRAG, "fluidTorque"),
+                         {"solution": {"coupled": True, "sourceTerms": {
+                             "schemes": {"U": "explicit 1"}}}}))
     boxcase.run_case(case_dir)
     t = times(case_dir)[-1]
     m = rho_p * math.pi * d**3 / 6
@@ -324,15 +344,8 @@ def test_sgs_tracers_well_mixed(case_dir, foam_env, flow):
                      particles=parts, dt=dt, end_time=steps * dt,
                      write_interval=steps, nu=NU, rho_f=RHO_F,
                      wall_velocity=wall_u,
-                     forces="{ SchillerNaumannDrag; }", turbulence=SMAG,
-                     dispersion="dispersionModel PozorskiApte;\n"
-                     "    PozorskiApteCoeffs { kSgsSource nut; Ck 0.094; CT 1;"
-                     " betaC 1; seed 4; wallReflection true; }",
-                     # tracers: no collisions; stock rebound at the walls
-                     hard_sphere="none",
-                     patch_interaction="patchInteractionModel "
-                     "standardWallInteraction;\n    "
-                     "standardWallInteractionCoeffs { type rebound; }")
+                     turbulence=SMAG, hard_sphere="none",
+                     cloud=tracers(4, 1, True))
     boxcase.write_internal_U(case_dir, L, n,
                              lambda x, y, z: (prof(y), 0, 0))
     add_nut(case_dir)

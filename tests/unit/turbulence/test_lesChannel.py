@@ -16,6 +16,7 @@ import pytest
 
 from aggloTools import boxcase
 from aggloTools.cloud import cloud_dir, read_lagrangian, read_positions
+from aggloTools.foamfile import dict_text
 from aggloTools.fields import read_internal
 from aggloTools.runner import foam_bin, run
 from aggloTools.stats import stats_rows
@@ -96,8 +97,10 @@ def channel_case(case, n_particles=1000):
       f"boundaryField\n{{\n    {cyc}\n"
       "    \".*Wall\" { type zeroGradient; }\n}\n")
 
-    rough = ("{ wallModel sandgrain; sandgrainCoeffs { en 0.9; et 0.3;"
-             " muSt 0.5; muKin 0.4; Rz 10e-6; CSurface 3; } }")
+    rough = {"wallModel": "sandgrain",
+             "sandgrainCoeffs": {"en": 0.9, "et": 0.3, "muSt": 0.5,
+                                 "muKin": 0.4, "Rz": 10e-6, "CSurface": 3}}
+    coeffs = boxcase.kernel("EAM", walls={'".*Wall"': rough}, randomSeed=1)
     f(case / "constant/kinematicCloudProperties", "dictionary", "constant",
       "kinematicCloudProperties",
       "solution\n{\n    active true;\n    coupled true;\n"
@@ -118,9 +121,7 @@ def channel_case(case, n_particles=1000):
       "    stochasticCollisionModel none;\n"
       "    rotationModel fluidTorque;\n"
       "    collisionModel hardSphere;\n"
-      "    hardSphereCoeffs\n    {\n" + boxcase.KERNEL
-      + "    agglomerationModel EAM;\n    randomSeed 1;\n"
-      f'    walls {{ ".*Wall" {rough} }}\n    }}\n}}\n'
+      "    hardSphereCoeffs\n    {\n" + dict_text(coeffs, 8) + "    }\n}\n"
       "cloudFunctions { hardSphereStatistics"
       " { type hardSphereStatistics; } }\n")
 

@@ -11,29 +11,51 @@ import numpy as np
 
 from aggloTools import boxcase
 from aggloTools.cloud import cloud_positions, read_cloud
+from aggloTools.foamfile import merged
 
-H, DELTA0, RHO_P, DP = 6.3e-20, 2e-10, 2200.0, 12e-6   # boxcase.KERNEL
+H, DELTA0, RHO_P, DP = 6.3e-20, 2e-10, 2200.0, 12e-6   # boxcase.MATERIAL
 GAP = 1e-3                                             # delta_gap/d_p
 CSM_F = {2: 0.26683, 3: 0.31574, 4: 0.42099, 9: 0.47106, 10: 0.41216}
 F_LARGE = 0.52
 
-BREAKUP = ("breakupModel stressThreshold;\n    stressThresholdCoeffs {"
-           " strength { rumpfPrefactor 1; coordination exactSmallRumpf; }"
-           " stresses { mechanisms (rotation);"
-           " rotationFactor 0.0625; }"
-           f" fragmentation {{ mode erosion; direction extensional;"
-           f" gap {GAP}; tries 6; spin conserveL; }} }}")
+#: Verification case V1's stressThreshold coefficients (rotation alone)
+BREAKUP_COEFFS = {
+    "strength": {"rumpfPrefactor": 1, "coordination": "exactSmallRumpf"},
+    "stresses": {"mechanisms": ("rotation",), "rotationFactor": 0.0625},
+    "fragmentation": {"mode": "erosion", "direction": "extensional",
+                      "gap": GAP, "tries": 6, "spin": "conserveL"},
+}
+
+
+def breakup(stresses=None, fragmentation=None, drag=False, rotation=False,
+            **entries):
+    """The cloud entries (boxcase.cloud_properties) of stressThreshold
+    break-up: BREAKUP_COEFFS with stresses replaced where given,
+    fragmentation's entries changed and further coefficients (rate,
+    eventLog) added; drag: Schiller-Naumann's; rotation: the fluid's
+    torque."""
+    coeffs = merged(BREAKUP_COEFFS,
+                    {"fragmentation": fragmentation or {}, **entries})
+    if stresses is not None:
+        coeffs["stresses"] = stresses
+    sub = {"breakupModel": "stressThreshold",
+           "stressThresholdCoeffs": coeffs}
+    if drag:
+        sub["particleForces"] = boxcase.DRAG
+    if rotation:
+        sub["rotationModel"] = "fluidTorque"
+    return {"subModels": sub}
+
+
+BREAKUP = breakup()
 
 
 def kernel(hamaker=None, structure="CSM"):
-    """The box cases' kernel (boxcase.KERNEL) with EAM, smooth walls and,
+    """The box cases' kernel (boxcase.kernel) with EAM, smooth walls and,
     where given, another Hamaker constant or structure model."""
-    k = boxcase.KERNEL.replace("structureModel CSM;",
-                               f"structureModel {structure};")
-    if hamaker is not None:
-        k = k.replace("H 6.3e-20", f"H {hamaker!r}")
-    return k + ("    agglomerationModel EAM;\n"
-                f"    walls {{ \".*\" {boxcase.WALL} }}\n")
+    material = {} if hamaker is None else {"H": hamaker}
+    return boxcase.kernel("EAM", structureModel=structure,
+                          material=material)
 
 
 def packing(n):

@@ -13,9 +13,9 @@ from aggloTools import boxcase
 from aggloTools.cloud import read_cloud
 from aggloTools.stats import read_stats
 from aggloTools.times import last_time
-from breakupCases import (BREAKUP, DELTA0, DP, GAMMA_CRIT, H, L_C, N_C, NU_F,
-                          RHO_F, RHO_P, kernel, packing, size_density, state,
-                          tensile_strength)
+from breakupCases import (DELTA0, DP, GAMMA_CRIT, H, L_C, N_C, NU_F, RHO_F,
+                          RHO_P, breakup, kernel, packing, size_density,
+                          state, tensile_strength)
 
 
 @pytest.mark.parametrize("reading", ["total", "resolvedShear", "subgrid"])
@@ -42,17 +42,15 @@ def test_critical_shear_rate_laminar(case_dir, foam_env, n, factor,
     part = [dict(x=x0, U=(u0, 0, 0), d=da, rho=rho, nPrimary=n,
                  omega=(0, 0, -gamma / 2))]
     hs = kernel(h_weak)
-    brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
-                          "mechanisms (turbulence); dissipation"
-                          f" {reading}; Cv 1; Ci 1;")
-    assert "turbulence" in brk
+    brk = breakup({"mechanisms": ("turbulence",), "dissipation": reading,
+                   "Cv": 1, "Ci": 1})
     uw = gamma * L_C[1] / 2
     boxcase.box_case(case_dir, L=L_C, n=N_C,
                      kinds=("cyclic", "wall", "cyclic"), particles=part,
                      dt=1e-7, end_time=1e-7, nu=NU_F, rho_f=RHO_F,
                      wall_velocity={"yMin": (-uw, 0, 0),
                                     "yMax": (uw, 0, 0)},
-                     hard_sphere=hs, breakup=brk)
+                     hard_sphere=hs, cloud=brk)
     boxcase.write_internal_U(case_dir, L_C, N_C,
                              lambda x, y, z: (gamma * (y - L_C[1] / 2), 0,
                                               0))
@@ -98,20 +96,16 @@ def test_stochastic_rate_breaks_the_expected_share(case_dir, foam_env,
                     U=(gamma * (y - L_C[1] / 2), 0, 0), d=da, rho=rho,
                     nPrimary=n, omega=(0, 0, -gamma / 2)))
     hs = kernel(h_weak)
-    brk = BREAKUP.replace(
-        "mechanisms (rotation); rotationFactor 0.0625;",
-        "mechanisms (turbulence); dissipation total; Cv 1;"
-        " Ci 1;").replace(
-        "spin conserveL; }",
-        f"spin conserveL; }} rate {{ model stochastic; timeScale {scale}; }}")
-    assert "stochastic" in brk and "turbulence" in brk
+    brk = breakup({"mechanisms": ("turbulence",), "dissipation": "total",
+                   "Cv": 1, "Ci": 1},
+                  rate={"model": "stochastic", "timeScale": scale})
     uw = gamma * L_C[1] / 2
     boxcase.box_case(case_dir, L=L_C, n=N_C,
                      kinds=("cyclic", "wall", "cyclic"), particles=parts,
                      dt=dt, end_time=dt, nu=NU_F, rho_f=RHO_F,
                      wall_velocity={"yMin": (-uw, 0, 0),
                                     "yMax": (uw, 0, 0)},
-                     hard_sphere=hs, breakup=brk, write_format="binary")
+                     hard_sphere=hs, cloud=brk, write_format="binary")
     boxcase.write_internal_U(case_dir, L_C, N_C,
                              lambda x, y, z: (gamma * (y - L_C[1] / 2), 0,
                                               0))
@@ -157,14 +151,11 @@ def test_critical_drag_slip(case_dir, foam_env, ratio):
     part = [dict(x=(1e-3, 0.5e-3, 0.5e-3), U=(u0, 0, 0), d=da, rho=rho,
                  nPrimary=n)]
     hs = kernel(h_weak)
-    brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
-                          "mechanisms (drag); Cd 1;")
-    assert "(drag)" in brk
+    brk = breakup({"mechanisms": ("drag",), "Cd": 1}, drag=True)
     dt = 1e-5 * tau
     boxcase.box_case(case_dir, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=part, dt=dt, end_time=dt, nu=NU_F,
-                     rho_f=RHO_F, forces="{ SchillerNaumannDrag; }",
-                     hard_sphere=hs, breakup=brk)
+                     rho_f=RHO_F, hard_sphere=hs, cloud=brk)
     boxcase.run_case(case_dir)
     log = (case_dir / "log.aggloPimpleFoam").read_text()
     m = re.search(r"Break-up: (\d+) events \(turbulence 0, drag (\d+), "
@@ -175,7 +166,7 @@ def test_critical_drag_slip(case_dir, foam_env, ratio):
     assert sorted(c["nPrimary"]) == ([1, n - 1] if ratio > 1 else [n])
 
 
-EN_PAIR, P_MAX = 0.97, 1.612985e9                      # boxcase.KERNEL
+EN_PAIR, P_MAX = 0.97, 1.612985e9           # boxcase.kernel(): en, pMax
 
 
 def wall_impact_speed(n):
@@ -204,11 +195,9 @@ def test_wall_impact_breaks_above_the_critical_speed(case_dir, foam_env, n,
     L = (1e-3, 1e-3, 1e-3)
     part = [dict(x=(0.5e-3, da / 2 + 0.5 * v * dt, 0.5e-3), U=(0, -v, 0),
                  d=da, rho=rho, nPrimary=n)]
-    brk = BREAKUP.replace("mechanisms (rotation); rotationFactor 0.0625;",
-                          "mechanisms (wallImpact); Cw 1;")
-    assert "wallImpact" in brk
+    brk = breakup({"mechanisms": ("wallImpact",), "Cw": 1})
     boxcase.box_case(case_dir, L=L, n=(4, 4, 4), particles=part, dt=dt,
-                     end_time=dt, hard_sphere=kernel(), breakup=brk)
+                     end_time=dt, hard_sphere=kernel(), cloud=brk)
     boxcase.run_case(case_dir)
     t = last_time(case_dir)
     c, x, m = state(case_dir, t)

@@ -20,7 +20,7 @@ import pytest
 from aggloTools import boxcase, breakuplog
 from aggloTools.runner import CommandError, foam_bin, run
 from aggloTools.stats import stats_rows
-from breakupCases import (BREAKUP, GAMMA_CRIT, H, L_C, N_C, NU_F, RHO_F,
+from breakupCases import (GAMMA_CRIT, H, L_C, N_C, NU_F, RHO_F, breakup,
                           kernel, size_density, tensile_strength)
 
 STEPS, WRITE = 6, 2
@@ -49,16 +49,12 @@ def shear_case(case):
                        0, 0), d=da, rho=rho, nPrimary=n,
                     omega=(0, 0, -gamma / 2 * rng.uniform(0.5, 4))))
     h_weak = H * GAMMA_CRIT * NU_F * RHO_F / tensile_strength(2, "CSM")
-    brk = BREAKUP.replace(
-        "mechanisms (rotation); rotationFactor 0.0625;",
-        "mechanisms (turbulence drag rotation); dissipation total;"
-        " Cv 1; Ci 1; Cd 1;"
-        " rotationFactor 0.0625;").replace(
-        "mode erosion;", "mode beta; betaAlpha 0.5;").replace(
-        "spin conserveL; }",
-        "spin conserveL; } rate { model stochastic; timeScale kolmogorov;"
-        " } eventLog true;")
-    assert "beta" in brk and "eventLog true" in brk
+    brk = breakup({"mechanisms": ("turbulence", "drag", "rotation"),
+                   "dissipation": "total", "Cv": 1, "Ci": 1, "Cd": 1,
+                   "rotationFactor": 0.0625},
+                  {"mode": "beta", "betaAlpha": 0.5}, drag=True,
+                  rate={"model": "stochastic", "timeScale": "kolmogorov"},
+                  eventLog=True)
     dt = 1 / gamma
     uw = gamma * L_C[1] / 2
     boxcase.box_case(case, L=L_C, n=N_C,
@@ -67,8 +63,7 @@ def shear_case(case):
                      nu=NU_F, rho_f=RHO_F,
                      wall_velocity={"yMin": (-uw, 0, 0),
                                     "yMax": (uw, 0, 0)},
-                     forces="{ SchillerNaumannDrag; }",
-                     hard_sphere=kernel(h_weak), breakup=brk,
+                     hard_sphere=kernel(h_weak), cloud=brk,
                      write_format="binary")
     boxcase.write_internal_U(case, L_C, N_C,
                              lambda x, y, z: (gamma * (y - L_C[1] / 2), 0,

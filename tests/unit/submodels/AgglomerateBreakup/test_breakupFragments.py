@@ -13,9 +13,9 @@ from scipy.spatial import cKDTree
 from aggloTools import boxcase, breakuplog
 from aggloTools.stats import read_stats
 from aggloTools.times import last_time
-from breakupCases import (BREAKUP, DP, GAP, H, NU_F, RHO_F, by_id, kernel,
-                          omega_crit, size_density, state, tensile_strength,
-                          totals)
+from breakupCases import (BREAKUP, DP, GAP, H, NU_F, RHO_F, breakup, by_id,
+                          kernel, omega_crit, size_density, state,
+                          tensile_strength, totals)
 
 
 def test_fragments_never_re_stick_in_still_fluid(case_dir, foam_env):
@@ -32,7 +32,7 @@ def test_fragments_never_re_stick_in_still_fluid(case_dir, foam_env):
     hs = kernel()
     boxcase.box_case(case_dir, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=part, dt=1e-7, end_time=2e-6,
-                     write_interval=5, hard_sphere=hs, breakup=BREAKUP)
+                     write_interval=5, hard_sphere=hs, cloud=BREAKUP)
     boxcase.run_case(case_dir)
     stats = read_stats(case_dir)
     assert stats["nBreakupRotation"][-1] == 1
@@ -88,7 +88,7 @@ def test_break_time_independent_of_the_time_step(case_dir, foam_env,
                      dt=dt, end_time=(k_b + 3) * dt, nu=NU_F, rho_f=RHO_F,
                      wall_velocity={"yMin": (-uw, 0, 0),
                                     "yMax": (uw, 0, 0)},
-                     hard_sphere=hs, breakup=BREAKUP, rotation=True)
+                     hard_sphere=hs, cloud=breakup(rotation=True))
     boxcase.write_internal_U(case_dir, Lb, nb,
                              lambda x, y, z: (gamma * (y - Lb[1] / 2), 0,
                                               0))
@@ -125,11 +125,10 @@ def many_parents(case, mode, decompose=(1, 1, 1)):
                     nPrimary=n, omega=tuple(w * axis)))
     assert len(parts) == 10164
     hs = kernel()
-    brk = BREAKUP.replace("mode erosion;", f"mode {mode};").replace(
-        "spin conserveL; }", "spin conserveL; } eventLog true;")
+    brk = breakup(fragmentation={"mode": mode}, eventLog=True)
     boxcase.box_case(case, L=(2.2e-3, 2.2e-3, 2.1e-3), n=(11, 11, 10),
                      particles=parts, dt=1e-7, end_time=1e-7,
-                     hard_sphere=hs, breakup=brk, decompose=decompose,
+                     hard_sphere=hs, cloud=brk, decompose=decompose,
                      write_format="binary")
     return parts
 
@@ -242,11 +241,10 @@ def crowded_parents(case, mode, decompose=(1, 1, 1)):
                                       d=DP, rho=2200.0, nPrimary=1,
                                       omega=(0, 0, 0)))
     hs = kernel()
-    brk = BREAKUP.replace("mode erosion;", f"mode {mode};").replace(
-        "spin conserveL; }", "spin conserveL; } eventLog true;")
+    brk = breakup(fragmentation={"mode": mode}, eventLog=True)
     boxcase.box_case(case, L=L, n=(11, 11, 12),
                      kinds=("cyclic", "wall", "cyclic"), particles=parts,
-                     dt=1e-7, end_time=1e-7, hard_sphere=hs, breakup=brk,
+                     dt=1e-7, end_time=1e-7, hard_sphere=hs, cloud=brk,
                      decompose=decompose, write_format="binary")
     return parts, parents, L
 

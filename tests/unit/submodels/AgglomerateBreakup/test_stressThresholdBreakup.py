@@ -38,7 +38,7 @@ def spinning_case(case, structure, factors=(0.99, 1.01)):
     hs = kernel(structure=structure)
     boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=parts, dt=1e-7, end_time=1e-7,
-                     hard_sphere=hs, breakup=BREAKUP)
+                     hard_sphere=hs, cloud=BREAKUP)
     return parts
 
 
@@ -138,7 +138,7 @@ def test_hit_agglomerate_checked_in_the_same_step(case_dir, foam_env):
     boxcase.box_case(case_dir, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=parts, dt=1e-7, end_time=1e-7,
                      hard_sphere=kernel(structure=structure),
-                     breakup=BREAKUP)
+                     cloud=BREAKUP)
     boxcase.run_case(case_dir)
     stats = read_stats(case_dir)
     assert stats["nCol"][0] == 1              # the hit, in the first step
@@ -161,7 +161,7 @@ def boundary_case(case, decompose=(1, 1, 1), steps=2, write=None):
     hs = kernel()
     boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                      particles=parts, dt=1e-7, end_time=steps * 1e-7,
-                     write_interval=write, hard_sphere=hs, breakup=BREAKUP,
+                     write_interval=write, hard_sphere=hs, cloud=BREAKUP,
                      decompose=decompose, write_format="binary")
     return parts
 
@@ -214,7 +214,7 @@ def test_restart_continues_the_fragment_ids(case_dir, foam_env):
         case = case_dir / name
         boxcase.box_case(case, L=(2e-3, 1e-3, 1e-3), n=(8, 4, 4),
                          particles=part, dt=1e-7, end_time=3e-7,
-                         write_interval=1, hard_sphere=hs, breakup=BREAKUP,
+                         write_interval=1, hard_sphere=hs, cloud=BREAKUP,
                          write_format="binary")
         runs[name] = case
     boxcase.run_case(runs["whole"])

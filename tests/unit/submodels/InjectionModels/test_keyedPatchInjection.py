@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy import stats as sps
 
-from aggloTools.boxcase import KERNEL, box_case, run_case
+from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.cloud import read_cloud, read_mass_balance, read_positions, \
     cloud_dir
 from aggloTools.times import last_time
@@ -21,52 +21,36 @@ from aggloTools.times import last_time
 D = 12e-6
 M1 = 2200 * math.pi / 6 * D ** 3
 L = 1e-4
-ESCAPE = ("patchInteractionModel localInteraction;\n"
-          "    localInteractionCoeffs { patches ( \".*\" { type escape; } )"
-          "; }")
-NO_WALLS = KERNEL + "    agglomerationModel none;\n    walls {}\n"
+ESCAPE = {"patchInteractionModel": "localInteraction",
+          "localInteractionCoeffs": {
+              "patches": '( ".*" { type escape; } )'}}
 
 
-def injector(pps, duration, U0=(0.05, 0, 0), extra="", placement="area"):
-    velocity = (f"U0              ({U0[0]} {U0[1]} {U0[2]});"
-                if placement == "area" else "")
-    return f"""injectionModels
-    {{
-        inlet
-        {{
-            type            keyedPatchInjection;
-            patch           xMin;
-            SOI             0;
-            duration        {duration!r};
-            parcelsPerSecond {pps!r};
-            placement       {placement};
-            {velocity}
-            massTotal       0;
-            parcelBasisType fixed;
-            nParticle       1;
-            sizeDistribution
-            {{
-                type        fixedValue;
-                fixedValueDistribution {{ value {D}; }}
-            }}
-            {extra}
-        }}
-    }}"""
+def injector(pps, duration, U0=(0.05, 0, 0), placement="area"):
+    """keyedPatchInjection at xMin: fixed-size primaries at pps parcels
+    per second for the duration, at U0 (placement area) or with the
+    fluid's face flux (placement flux)."""
+    inlet = {"type": "keyedPatchInjection", "patch": "xMin", "SOI": 0,
+             "duration": float(duration), "parcelsPerSecond": float(pps),
+             "placement": placement,
+             "U0": tuple(U0) if placement == "area" else None,
+             "massTotal": 0, "parcelBasisType": "fixed", "nParticle": 1,
+             "sizeDistribution": {"type": "fixedValue",
+                                  "fixedValueDistribution": {"value": D}}}
+    return {"injectionModels": {"inlet": inlet}}
 
 
 def injection_case(case, pps=2e4, duration=1e-3, end_time=4e-3,
-                   write_interval=10, U0=(0.05, 0, 0), extra="",
-                   n=(4, 4, 4), decompose=(1, 1, 1), placement="area"):
+                   write_interval=10, U0=(0.05, 0, 0), n=(4, 4, 4),
+                   decompose=(1, 1, 1), placement="area"):
     """An open box (every side a patch; escape everywhere), inlet xMin."""
-    box_case(case, L=(L, L, L), n=n, kinds=("patch", "patch", "patch"),
-             dt=1e-4, end_time=end_time, write_interval=write_interval,
-             hard_sphere=NO_WALLS, patch_interaction=ESCAPE,
-             decompose=decompose)
-    f = case / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace(
-        "injectionModels {}", injector(pps, duration, U0, extra,
-                                       placement)))
-    return case
+    return box_case(case, L=(L, L, L), n=n,
+                    kinds=("patch", "patch", "patch"), dt=1e-4,
+                    end_time=end_time, write_interval=write_interval,
+                    hard_sphere=kernel(walls={}), decompose=decompose,
+                    cloud={"subModels": {
+                        **ESCAPE, **injector(pps, duration, U0,
+                                             placement)}})
 
 
 def test_count_ids_size_and_balance(case_dir, foam_env):
@@ -192,14 +176,14 @@ def test_two_ranks_inject_the_same_particles(case_dir, foam_env):
 
 @pytest.mark.parametrize("old,new,word", [
     ("parcelBasisType fixed;", "parcelBasisType mass;", "nParticle 1"),
-    ("nParticle       1;", "nParticle       3;", "nParticle 1"),
-    ("patch           xMin;", "patch           inlet;", "inlet"),
+    ("nParticle 1;", "nParticle 3;", "nParticle 1"),
+    ("patch xMin;", "patch inlet;", "inlet"),
     ("parcelsPerSecond", "flowRateProfile constant 1; parcelsPerSecond",
      "flowRateProfile"),
-    ("duration        0.001;", "duration        0;", "duration"),
-    ("placement       area;", "", "placement"),
-    ("placement       area;", "placement       flux;", "U0"),
-    ("placement       area;", "placement       even;", "even"),
+    ("duration 0.001;", "duration 0;", "duration"),
+    ("placement area;", "", "placement"),
+    ("placement area;", "placement flux;", "U0"),
+    ("placement area;", "placement even;", "even"),
 ], ids=["basisMass", "nParticle3", "patchName", "flowRateProfile",
         "durationZero", "placementMissing", "fluxWithU0", "placementName"])
 def test_bad_injector_input(case_dir, foam_env, old, new, word):

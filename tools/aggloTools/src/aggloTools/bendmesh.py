@@ -155,8 +155,8 @@ def pipe_case(case, g, n=8, n_ring=4, n_axial=(20, 30, 20),
               inlet_velocity=(0, 0, 0), ranks=(1, 1, 1), ring_grading=1.0,
               **box):
     """A complete case on the pipe (aggloTools.boxcase.box_case for the
-    rest: box's keyword arguments, e.g. particles, hard_sphere,
-    patch_interaction, dt, end_time): the mesh, U and p with the inlet's
+    rest: box's keyword arguments, e.g. particles, hard_sphere, cloud,
+    dt, end_time): the mesh, U and p with the inlet's
     velocity, a zero-gradient outlet and still walls, and a hierarchical
     decomposition into ranks (x, y, z) (ring_grading: the ring blocks'
     last cell over their first, below 1 finer at the wall): (1, 2, 1)

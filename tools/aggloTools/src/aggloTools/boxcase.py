@@ -3,12 +3,17 @@ or cyclic pairs per direction), a frozen fluid at rest or a given velocity
 field, optional particle forces, and a scripted initial particle state
 written as lagrangian fields at time 0. With no forces the particles move
 in straight lines, so every collision and wall impact can be predicted by
-hand or with hardSphereCollide.
+hand or with hardSphereCollide. Every dictionary is a nested dict
+written by aggloTools.foamfile.dict_text; a case changes the defaults by
+nested dicts merged in (foamfile.merged):
 
     from aggloTools import boxcase
     case = boxcase.box_case(tmp, particles=[
         {"x": (3e-4, 5e-4, 5e-4), "U": (1, 0, 0), "d": 12e-6},
-        {"x": (7e-4, 5e-4, 5e-4), "U": (-1, 0, 0), "d": 12e-6}])
+        {"x": (7e-4, 5e-4, 5e-4), "U": (-1, 0, 0), "d": 12e-6}],
+        hard_sphere=boxcase.kernel("EAM", structureModel="VSM"),
+        cloud={"subModels": {"particleForces": boxcase.DRAG,
+                             "rotationModel": "fluidTorque"}})
     boxcase.run_case(case)
 """
 
@@ -18,169 +23,208 @@ import numpy as np
 
 from .cloud import write_cloud
 from .fields import set_internal_vector_field
-from .foamfile import vec, write_foamfile as foamfile
+from .foamfile import dict_text, merged, vec, write_foamfile as foamfile
 from .runner import foam_bin, run
 
-# Quartz, 12 um, Tab. 1 (doc/models.md 0.6): the kernel of the utility tests
-KERNEL = """
-    material { H 6.3e-20; E 7.2e10; nu 0.17; pMax 1.612985e9; delta0 2e-10;
-               rho0 2200; }
-    particleCollision { en 0.97; et 0.44; muSt 0.94; muKin 0.092; }
-    structureModel CSM;
-"""
+#: Quartz, 12 um, Tab. 1 (doc/models.md 0.6): the kernel of the utility
+#: tests
+MATERIAL = {"H": 6.3e-20, "E": 7.2e10, "nu": 0.17, "pMax": 1.612985e9,
+            "delta0": 2e-10, "rho0": 2200}
+PARTICLE_COLLISION = {"en": 0.97, "et": 0.44, "muSt": 0.94,
+                      "muKin": 0.092}
+#: A smooth wall: the walls entry of every wall patch by default
+WALL = {"wallModel": "smooth",
+        "smoothCoeffs": {"en": 0.8, "et": 0.4, "muSt": 0.3, "muKin": 0.15}}
+#: Stokes drag with Schiller-Naumann's correction: particleForces
+DRAG = {"SchillerNaumannDrag": ""}
 
-WALL = "{ wallModel smooth; smoothCoeffs { en 0.8; et 0.4; muSt 0.3; " \
-       "muKin 0.15; } }"
+
+def kernel(agglomeration="none", walls=None, **changes):
+    """The body of the collision model's hardSphereCoeffs: the quartz
+    kernel, the agglomeration model, walls (default: every patch WALL;
+    {} for none) and changes merged in (foamfile.merged: e.g.
+    structureModel="VSM", material={"H": 1e-21})."""
+    k = {"material": MATERIAL, "particleCollision": PARTICLE_COLLISION,
+         "structureModel": "CSM", "agglomerationModel": agglomeration,
+         "walls": {'".*"': WALL} if walls is None else walls}
+    return merged(k, changes)
+
+
+def cloud_properties(hard_sphere=None, cloud=None):
+    """kinematicCloudProperties as a nested dict: a one-way cloud with no
+    forces, injection, dispersion or rotation, the hard-sphere collision
+    model (hard_sphere: its coefficients, default kernel(); "none": no
+    collision model) and the statistics function object, with cloud
+    merged in (foamfile.merged: e.g. {"subModels": {"rotationModel":
+    "fluidTorque", "particleForces": DRAG}})."""
+    if hard_sphere == "none":
+        collision = {"collisionModel": "none"}
+    else:
+        collision = {"collisionModel": "hardSphere",
+                     "hardSphereCoeffs": hard_sphere or kernel()}
+    base = {
+        "solution": {
+            "active": True, "coupled": False, "transient": "yes",
+            "cellValueSourceCorrection": "off", "maxCo": 1,
+            "sourceTerms": {"schemes": {"U": "semiImplicit 1"}},
+            "interpolationSchemes": {"rho": "cell", "U": "cellPoint",
+                                     "mu": "cell", "curlUcDt": "cellPoint"},
+            "integrationSchemes": {"U": "Euler"}},
+        "constantProperties": {"rho0": 2200},
+        "subModels": {
+            "particleForces": {}, "injectionModels": {},
+            "dispersionModel": "none", "patchInteractionModel": "none",
+            "surfaceFilmModel": "none", "stochasticCollisionModel": "none",
+            "rotationModel": "none", **collision},
+        "cloudFunctions": {
+            "hardSphereStatistics": {"type": "hardSphereStatistics"}},
+    }
+    return merged(base, cloud)
 
 
 def box_case(case, L=(1e-3, 1e-3, 1e-3), n=(4, 4, 4),
              kinds=("wall", "wall", "wall"), particles=(), dt=1e-4,
-             end_time=1e-3, write_interval=None, hard_sphere="",
-             agglomeration="none", write_format="ascii",
-             decompose=(1, 1, 1), wall_velocity=None, cloud_extra="",
-             forces="{}", gravity=(0, 0, 0), rotation=False,
-             dispersion="dispersionModel none;", coupled=False,
-             turbulence="simulationType laminar;", nu=1.5e-5, rho_f=1.2,
-             frozen=True, tol=1e-8, source_scheme="semiImplicit 1",
-             patch_interaction="patchInteractionModel none;", breakup="",
-             integration="Euler"):
+             end_time=1e-3, write_interval=None, write_format="ascii",
+             decompose=(1, 1, 1), wall_velocity=None, gravity=(0, 0, 0),
+             nu=1.5e-5, rho_f=1.2, frozen=True, tol=1e-8, turbulence=None,
+             hard_sphere=None, cloud=None):
     """Write a complete case. kinds: 'wall', 'cyclic' or 'patch' (open)
-    per direction.
+    per direction; wall_velocity: {patch: U} of moving walls.
     particles: dicts with x, U, d (optional omega, rho, nPrimary, id).
-    hard_sphere: the body of the collision model's hardSphereCoeffs
-    (default: KERNEL, the agglomeration model and smooth walls), or "none"
-    for collisionModel none; the statistics function object is always on.
-    rotation: rotationModel fluidTorque (else none); dispersion: the
-    dispersionModel entry (plus its coefficients); turbulence: the body
-    of constant/turbulenceProperties; breakup: the breakupModel entry and
-    its coefficients (default: none, by its absence); integration: the
-    particle velocity's scheme (Euler, or analytical for particles whose
-    relaxation time is below the step)."""
+    frozen: the fluid is not solved (PIMPLE's frozenFlow); turbulence:
+    constant/turbulenceProperties (default laminar). hard_sphere and
+    cloud: kinematicCloudProperties as cloud_properties() writes it
+    (the statistics function object is always on)."""
     case = Path(case)
     steps = round(end_time / dt)
-    write_interval = write_interval or steps
-    names = "xyz"
     for kind in kinds:
         if kind not in ("wall", "cyclic", "patch"):
             raise ValueError(f"box kind '{kind}': wall, cyclic or patch")
-    Lx, Ly, Lz = L
-    pts = [(0, 0, 0), (Lx, 0, 0), (Lx, Ly, 0), (0, Ly, 0),
-           (0, 0, Lz), (Lx, 0, Lz), (Lx, Ly, Lz), (0, Ly, Lz)]
-    faces = {
-        "x": ("(0 4 7 3)", "(1 2 6 5)"),
-        "y": ("(0 1 5 4)", "(3 7 6 2)"),
-        "z": ("(0 3 2 1)", "(4 5 6 7)"),
-    }
-    bnd = []
-    for k, kind in zip(names, kinds):
-        lo, hi = faces[k]
-        if kind == "cyclic":
-            bnd.append(f"{k}Min {{ type cyclic; neighbourPatch {k}Max; "
-                       f"faces ({lo}); }}")
-            bnd.append(f"{k}Max {{ type cyclic; neighbourPatch {k}Min; "
-                       f"faces ({hi}); }}")
-        else:
-            bnd.append(f"{k}Min {{ type {kind}; faces ({lo}); }}")
-            bnd.append(f"{k}Max {{ type {kind}; faces ({hi}); }}")
-    foamfile(case / "system/blockMeshDict", "dictionary", "system",
-             "blockMeshDict",
-             "scale 1;\nvertices (" + " ".join(vec(p) for p in pts) + ");\n"
-             f"blocks (hex (0 1 2 3 4 5 6 7) ({n[0]} {n[1]} {n[2]}) "
-             "simpleGrading (1 1 1));\nboundary\n(\n    "
-             + "\n    ".join(bnd) + "\n);\n")
-
-    foamfile(case / "system/controlDict", "dictionary", "system",
-             "controlDict",
-             f"application aggloPimpleFoam;\nstartFrom latestTime;\n"
-             f"startTime 0;\nstopAt endTime;\nendTime {end_time!r};\n"
-             f"deltaT {dt!r};\nwriteControl timeStep;\n"
-             f"writeInterval {write_interval};\npurgeWrite 0;\n"
-             f"writeFormat {write_format};\nwritePrecision 17;\n"
-             "writeCompression off;\ntimeFormat general;\n"
-             "timePrecision 12;\nrunTimeModifiable false;\n")
-    foamfile(case / "system/fvSchemes", "dictionary", "system", "fvSchemes",
-             "ddtSchemes { default Euler; }\n"
-             "gradSchemes { default Gauss linear; }\n"
-             "divSchemes { default none; div(phi,U) Gauss linear;\n"
-             "    div((nuEff*dev2(T(grad(U))))) Gauss linear; }\n"
-             "laplacianSchemes { default Gauss linear corrected; }\n"
-             "interpolationSchemes { default linear; }\n"
-             "snGradSchemes { default corrected; }\n")
-    foamfile(case / "system/fvSolution", "dictionary", "system",
-             "fvSolution",
-             "solvers { p { solver PCG; preconditioner DIC;"
-             f" tolerance {tol!r}; relTol 0; }} pFinal {{ $p; }}\n"
-             "\"(U|UFinal)\" { solver PBiCGStab; preconditioner DILU;"
-             f" tolerance {tol!r}; relTol 0; }} }}\n"
-             "PIMPLE { nOuterCorrectors 1; nCorrectors 2;"
-             " nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0;"
-             f" frozenFlow {'yes' if frozen else 'no'}; }}\n")
-    foamfile(case / "system/decomposeParDict", "dictionary", "system",
-             "decomposeParDict",
-             f"numberOfSubdomains {decompose[0]*decompose[1]*decompose[2]};"
-             f"\nmethod simple;\ncoeffs {{ n ({decompose[0]} {decompose[1]}"
-             f" {decompose[2]}); }}\n")
-    foamfile(case / "constant/transportProperties", "dictionary",
-             "constant", "transportProperties",
-             f"transportModel Newtonian;\nnu {nu!r};\nrhoInf {rho_f!r};\n")
-    foamfile(case / "constant/turbulenceProperties", "dictionary",
-             "constant", "turbulenceProperties", turbulence + "\n")
+    write = _dictionary_writer(case)
+    write("system/blockMeshDict", block_mesh(L, n, kinds))
+    write("system/controlDict", {
+        "application": "aggloPimpleFoam", "startFrom": "latestTime",
+        "startTime": 0, "stopAt": "endTime", "endTime": float(end_time),
+        "deltaT": float(dt), "writeControl": "timeStep",
+        "writeInterval": write_interval or steps, "purgeWrite": 0,
+        "writeFormat": write_format, "writePrecision": 17,
+        "writeCompression": "off", "timeFormat": "general",
+        "timePrecision": 12, "runTimeModifiable": False})
+    write("system/fvSchemes", SCHEMES)
+    write("system/fvSolution", solution(tol, frozen))
+    write("system/decomposeParDict", {
+        "numberOfSubdomains": int(np.prod(decompose)), "method": "simple",
+        "coeffs": {"n": tuple(decompose)}})
+    write("constant/transportProperties", {
+        "transportModel": "Newtonian", "nu": float(nu),
+        "rhoInf": float(rho_f)})
+    write("constant/turbulenceProperties",
+          turbulence or {"simulationType": "laminar"})
     foamfile(case / "constant/g", "uniformDimensionedVectorField",
              "constant", "g", "dimensions [0 1 -2 0 0 0 0];\n"
              f"value {vec(gravity)};\n")
-
-    ub, pb = [], []
-    for k, kind in zip(names, kinds):
-        for side in ("Min", "Max"):
-            if kind == "cyclic":
-                ub.append(f"{k}{side} {{ type cyclic; }}")
-                pb.append(f"{k}{side} {{ type cyclic; }}")
-            elif kind == "patch":
-                ub.append(f"{k}{side} {{ type zeroGradient; }}")
-                pb.append(f"{k}{side} {{ type fixedValue; "
-                          "value uniform 0; }")
-            else:
-                uw = (wall_velocity or {}).get(f"{k}{side}", (0, 0, 0))
-                ub.append(f"{k}{side} {{ type fixedValue; "
-                          f"value uniform {vec(uw)}; }}")
-                pb.append(f"{k}{side} {{ type zeroGradient; }}")
-    foamfile(case / "0/U", "volVectorField", "0", "U",
-             "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);"
-             "\nboundaryField\n{\n    " + "\n    ".join(ub) + "\n}\n")
-    foamfile(case / "0/p", "volScalarField", "0", "p",
-             "dimensions [0 2 -2 0 0 0 0];\ninternalField uniform 0;\n"
-             "boundaryField\n{\n    " + "\n    ".join(pb) + "\n}\n")
-
-    walls = f'walls {{ ".*" {WALL} }}'
-    hs = hard_sphere or (
-        KERNEL + f"    agglomerationModel {agglomeration};\n    {walls}\n")
-    collision = ("    collisionModel none;\n" if hs == "none" else
-                 "    collisionModel hardSphere;\n"
-                 "    hardSphereCoeffs\n    {\n" + hs + "    }\n")
-    foamfile(case / "constant/kinematicCloudProperties", "dictionary",
-             "constant", "kinematicCloudProperties",
-             "solution\n{\n    active true;\n"
-             f"    coupled {'true' if coupled else 'false'};\n"
-             "    transient yes;\n    cellValueSourceCorrection off;\n"
-             "    maxCo 1;\n"
-             "    sourceTerms { schemes { U " + source_scheme + "; } }\n"
-             "    interpolationSchemes { rho cell; U cellPoint; mu cell;"
-             " curlUcDt cellPoint; }\n"
-             f"    integrationSchemes {{ U {integration}; }}\n}}\n"
-             "constantProperties { rho0 2200; }\n"
-             "subModels\n{\n    particleForces " + forces + "\n"
-             "    injectionModels {}\n    " + dispersion + "\n"
-             "    " + patch_interaction + "\n    surfaceFilmModel none;\n"
-             "    stochasticCollisionModel none;\n"
-             "    rotationModel "
-             + ("fluidTorque" if rotation else "none") + ";\n"
-             + collision + ("    " + breakup + "\n" if breakup else "")
-             + "}\n"
-             "cloudFunctions\n{\n    hardSphereStatistics"
-             " { type hardSphereStatistics; }\n}\n"
-             + cloud_extra)
+    boundary_fields(case, kinds, wall_velocity)
+    write("constant/kinematicCloudProperties",
+          cloud_properties(hard_sphere, cloud))
     write_particles(case, particles)
     return case
+
+
+def _dictionary_writer(case):
+    """write(relative path, nested dict): the file as a dictionary."""
+    def write(rel, d):
+        loc, obj = rel.split("/")
+        foamfile(case / rel, "dictionary", loc, obj, dict_text(d))
+    return write
+
+
+#: The box cases' schemes: second order in space, Euler in time
+SCHEMES = {
+    "ddtSchemes": {"default": "Euler"},
+    "gradSchemes": {"default": "Gauss linear"},
+    "divSchemes": {"default": "none", "div(phi,U)": "Gauss linear",
+                   "div((nuEff*dev2(T(grad(U)))))": "Gauss linear"},
+    "laplacianSchemes": {"default": "Gauss linear corrected"},
+    "interpolationSchemes": {"default": "linear"},
+    "snGradSchemes": {"default": "corrected"},
+}
+
+
+def solution(tol, frozen):
+    """fvSolution: PCG for p, PBiCGStab for U to the absolute tolerance
+    tol, PIMPLE with two pressure correctors; frozen: the fluid is not
+    solved."""
+    return {
+        "solvers": {
+            "p": {"solver": "PCG", "preconditioner": "DIC",
+                  "tolerance": float(tol), "relTol": 0},
+            "pFinal": {"$p": ""},
+            '"(U|UFinal)"': {"solver": "PBiCGStab",
+                             "preconditioner": "DILU",
+                             "tolerance": float(tol), "relTol": 0}},
+        "PIMPLE": {"nOuterCorrectors": 1, "nCorrectors": 2,
+                   "nNonOrthogonalCorrectors": 0, "pRefCell": 0,
+                   "pRefValue": 0, "frozenFlow": "yes" if frozen else "no"},
+    }
+
+
+#: The box's faces per direction (low, high), by the blocks' vertices
+FACES = {"x": ((0, 4, 7, 3), (1, 2, 6, 5)),
+         "y": ((0, 1, 5, 4), (3, 7, 6, 2)),
+         "z": ((0, 3, 2, 1), (4, 5, 6, 7))}
+
+
+def block_mesh(L, n, kinds):
+    """blockMeshDict of the one-block box: its patches xMin ... zMax, of
+    type kinds per direction (a cyclic pair names its neighbour)."""
+    Lx, Ly, Lz = (float(c) for c in L)
+    pts = [(0, 0, 0), (Lx, 0, 0), (Lx, Ly, 0), (0, Ly, 0),
+           (0, 0, Lz), (Lx, 0, Lz), (Lx, Ly, Lz), (0, Ly, Lz)]
+    patches = {}
+    for k, kind in zip("xyz", kinds):
+        for side, other, face in zip(("Min", "Max"), ("Max", "Min"),
+                                     FACES[k]):
+            p = {"type": kind}
+            if kind == "cyclic":
+                p["neighbourPatch"] = f"{k}{other}"
+            patches[f"{k}{side}"] = {**p, "faces": (face,)}
+    boundary = "".join(f"    {name} {{ {dict_text(p).replace(chr(10), ' ')}"
+                       "}\n" for name, p in patches.items())
+    return {"scale": 1, "vertices": pts,
+            "blocks": "(hex (0 1 2 3 4 5 6 7) " + vec_int(n)
+                      + " simpleGrading (1 1 1))",
+            "boundary": "(\n" + boundary + ")"}
+
+
+def vec_int(n):
+    return "(" + " ".join(str(int(c)) for c in n) + ")"
+
+
+def boundary_fields(case, kinds, wall_velocity=None):
+    """0/U and 0/p: fluid at rest; walls no-slip (or moving, by
+    wall_velocity), open patches p = 0 with zero-gradient U, cyclic
+    pairs cyclic."""
+    ub, pb = {}, {}
+    for k, kind in zip("xyz", kinds):
+        for side in ("Min", "Max"):
+            name = f"{k}{side}"
+            if kind == "cyclic":
+                ub[name] = pb[name] = {"type": "cyclic"}
+            elif kind == "patch":
+                ub[name] = {"type": "zeroGradient"}
+                pb[name] = {"type": "fixedValue", "value": "uniform 0"}
+            else:
+                uw = (wall_velocity or {}).get(name, (0, 0, 0))
+                ub[name] = {"type": "fixedValue",
+                            "value": "uniform " + vec(uw)}
+                pb[name] = {"type": "zeroGradient"}
+    for name, cls, dims, zero, bnd in (
+            ("U", "volVectorField", "[0 1 -1 0 0 0 0]", "(0 0 0)", ub),
+            ("p", "volScalarField", "[0 2 -2 0 0 0 0]", "0", pb)):
+        foamfile(case / "0" / name, cls, "0", name,
+                 dict_text({"dimensions": dims,
+                            "internalField": "uniform " + zero,
+                            "boundaryField": bnd}))
 
 
 def box_cell_centres(L, n):

@@ -1,6 +1,7 @@
 """OpenFOAM files: the FoamFile header, dictionaries (flat `key value;`
-entries and sub-dictionaries), the binary header's arch, and list bodies
-(ASCII written, ASCII or binary read)."""
+entries and sub-dictionaries: read, and written from nested Python dicts),
+the binary header's arch, and list bodies (ASCII written, ASCII or binary
+read)."""
 
 import re
 from pathlib import Path
@@ -137,6 +138,72 @@ def write_foamfile(path, cls, loc, obj, body):
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(HEADER.format(cls=cls, loc=loc, obj=obj) + body
                     + "\n\n// " + "*" * 73 + " //\n")
+
+
+def entry_value(v):
+    """One value of a dictionary entry as written: a bool as true/false, a
+    number exactly (number()), a tuple or list as `(a b c)` (nested alike), a
+    string as it is (a word, or a value OpenFOAM reads as several
+    tokens)."""
+    if isinstance(v, (bool, np.bool_)):
+        return "true" if v else "false"
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, np.floating)):
+        return number(v)
+    if isinstance(v, (list, tuple)):
+        return "(" + " ".join(entry_value(c) for c in v) + ")"
+    if isinstance(v, str):
+        return v
+    raise TypeError(f"no dictionary value for {type(v).__name__} {v!r}")
+
+
+def number(v):
+    """A float as its shortest exact text (repr), large ones in scientific
+    notation as a user writes them (7.2e10, not 72000000000.0)."""
+    v = float(v)
+    if np.isfinite(v) and abs(v) >= 1e5:
+        return np.format_float_scientific(v, unique=True, trim="-",
+                                          exp_digits=1).replace("+", "")
+    return repr(v)
+
+
+def dict_text(d, indent=0):
+    """A nested dict as the entries of an OpenFOAM dictionary, one per
+    line and 4 spaces a level: a dict value is a sub-dictionary
+    `key { ... }` (`key {}` when empty), "" a keyword alone
+    (`SchillerNaumannDrag;`), None leaves the entry out, anything else
+    `key value;` (entry_value)."""
+    pad = " " * indent
+    out = []
+    for key, v in d.items():
+        if v is None:
+            continue
+        if isinstance(v, dict) and not v:
+            out.append(f"{pad}{key} {{}}\n")
+        elif isinstance(v, dict):
+            out.append(f"{pad}{key}\n{pad}{{\n{dict_text(v, indent + 4)}"
+                       f"{pad}}}\n")
+        elif isinstance(v, str) and not v:
+            out.append(f"{pad}{key};\n")
+        else:
+            out.append(f"{pad}{key} {entry_value(v)};\n")
+    return "".join(out)
+
+
+def merged(base, changes):
+    """A copy of the nested dict base with changes applied: a dict merges
+    into a sub-dictionary entry by entry, None removes the entry, any
+    other value replaces it (or is added, at the end)."""
+    out = dict(base)
+    for key, v in (changes or {}).items():
+        if v is None:
+            out.pop(key, None)
+        elif isinstance(v, dict) and isinstance(out.get(key), dict):
+            out[key] = merged(out[key], v)
+        else:
+            out[key] = v
+    return out
 
 
 def vec(v):
