@@ -290,11 +290,11 @@ def test_contacts_by_wall_distance():
     centre, in the last bin), agglomerating the 2nd, 4th and 5th: per bin
     by hand 2/1, 1/0, 0, 0, 1/1, 2/1; the medians of |u_n| (m/s in, mm/s
     out) 15, 30, -, -, 2, 1.5."""
-    regime = script("channel.regime.analysis")
+    contacts = script("channel.post.contacts")
     un = np.array([0.010, 0.020, 0.030, 0.002, 0.001, 0.002])
     yw = np.array([0.01, 0.01, 0.03, 0.3, 0.7, 1.0])
     agg = np.array([False, True, False, True, True, False])
-    b = regime.by_wall_distance(un, yw, agg)
+    b = contacts.by_wall_distance(un, yw, agg)
     assert b["n"] == [2, 1, 0, 0, 1, 2]
     assert b["nAgg"] == [1, 0, 0, 0, 1, 1]
     assert b["alpha"] == [0.5, 0.0, None, None, 1.0, 0.5]

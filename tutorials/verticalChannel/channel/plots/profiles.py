@@ -4,10 +4,10 @@ profiles, particle velocities and the pyvista picture of the particles."""
 
 import numpy as np
 
-from channel import TUTORIAL
-from channel.case import settings
 from aggloTools import cloud, times, uncertainty
 from aggloTools.stats import last_output, read_table
+
+from channel.case import settings
 
 TABLE_D6 = settings.TABLE_D6
 

@@ -23,7 +23,6 @@ from pathlib import Path
 from aggloTools import eventlog
 from aggloTools.eventlog import BASE, EN_SCAN as EN
 
-from channel import TUTORIAL
 from channel.case import settings
 from channel.post import postprocess
 

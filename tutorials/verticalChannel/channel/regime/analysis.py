@@ -10,13 +10,13 @@ from pathlib import Path
 
 import numpy as np
 
+from aggloTools import times, uncertainty
+from aggloTools.stats import read_stats, read_table
+
 from channel import TUTORIAL
 from channel.case import settings
 from channel.post import postprocess as post
-from channel.post.contacts import (QUANTILES, WALL_BINS,  # noqa: F401
-                             by_wall_distance, contact_distributions)
-from aggloTools import times, uncertainty
-from aggloTools.stats import read_stats, read_table
+from channel.post.contacts import contact_distributions
 
 
 MODELS = settings.MODELS

@@ -9,11 +9,10 @@ import textwrap
 
 import numpy as np
 
-from channel.regime import pairs
-from channel.regime import trend
-from channel.regime import verdict
-from channel.regime.analysis import (MODELS, PAPER, QUANTILES, START_SPAN,
-                                   paper_alpha, variant_history)
+from channel.post.contacts import QUANTILES
+from channel.regime import pairs, trend, verdict
+from channel.regime.analysis import (MODELS, PAPER, START_SPAN, paper_alpha,
+                                     variant_history)
 
 
 def plots(res, out):
@@ -205,7 +204,7 @@ def _trend_panel(ax, res):
 
 def _wall_bin_panels(ax_alpha, ax_rate, done):
     """Per finished variant and model, over the bins of wall distance
-    (analysis.by_wall_distance): the ratio of agglomerating
+    (channel.post.contacts.by_wall_distance): the ratio of agglomerating
     to all contacts (bins without an agglomeration at the panel's foot,
     open) and the contacts per T* x s^2 of the window."""
     import matplotlib.transforms

@@ -34,13 +34,11 @@ import json
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from channel import TUTORIAL
-from channel.case import settings
 from channel.regime import pairs
 from channel.regime import trend
 from channel.regime import verdict

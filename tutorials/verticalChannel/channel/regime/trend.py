@@ -16,10 +16,8 @@ a chi^2 at least as large on its degrees of freedom if the points lay on
 a power law with their sigmas; below 5 % the law is rejected, and the
 extrapolation says so."""
 
-
-import numpy as np
-
 from aggloTools import uncertainty
+
 from channel.regime.variants import presets, shortcut
 
 #: What a grid variant changes from the coarsest (regime32, the paper's
