@@ -57,7 +57,7 @@ from pathlib import Path
 
 import numpy as np
 
-from aggloTools.runner import project_dir
+from aggloTools.runner import package_command, project_dir
 from hardSphereCloudCases import as_variant, make_case
 
 ROOT = project_dir()
@@ -193,10 +193,9 @@ def ghost(dt_gamma, steps=400):
     for d in ("0.orig", "constant", "system"):
         shutil.copytree(SHEAR / d, case / d)
     shutil.copytree(SHEAR / "0.orig", case / "0")
-    py = sys.executable
-    text = subprocess.run([py, str(SHEAR / "shearFlow.py"), "settings",
-                           "ci", "detect"], check=True, text=True,
-                          capture_output=True).stdout
+    text = subprocess.run(package_command(SHEAR, "shear.case", "settings",
+                                          "ci", "detect"), check=True,
+                          text=True, capture_output=True).stdout
     gamma = float(re.search(r"gammaDot\s+([0-9.eE+-]+);", text).group(1))
     dt = dt_gamma / gamma
     for key, val in (("deltaT", dt), ("endTime", steps * dt),
@@ -205,7 +204,7 @@ def ghost(dt_gamma, steps=400):
     (case / "system" / "caseSettings").write_text(text)
     subprocess.run(["blockMesh"], cwd=case, check=True,
                    stdout=subprocess.DEVNULL)
-    subprocess.run([py, str(SHEAR / "shearFlow.py"), "init", "."],
+    subprocess.run(package_command(SHEAR, "shear.case", "init", "."),
                    cwd=case, check=True, stdout=subprocess.DEVNULL)
     with open(case / "log.aggloPimpleFoam", "w") as log:
         subprocess.run(["aggloPimpleFoam"], cwd=case, stdout=log,

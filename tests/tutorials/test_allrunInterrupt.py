@@ -92,7 +92,7 @@ def test_uninitialised_run_is_set_up_again(tut, foam_env):
     """A kill during the set-up left the mesh without particles: the next
     call sets the run up again (its init runs) instead of continuing."""
     res = subprocess.run([str(project_dir() / ".venv/bin/python"),
-                          "shearStudy.py", "list", "ci"], cwd=tut,
+                          "-m", "shear.study", "list", "ci"], cwd=tut,
                          capture_output=True, text=True, check=True)
     variant, run = res.stdout.split()[:2]
     d = tut / "runs" / "ci" / "study" / variant / run

@@ -15,12 +15,14 @@ from aggloTools.runner import project_dir, tutorial_module
 ROOT = project_dir()
 #: The channel tutorial's settings command, in its folder
 CHANNEL_CASE = ["-m", "channel.case"]
+#: The shear tutorial's settings command, in its folder
+SHEAR_CASE = ["-m", "shear.case"]
 
 
 @pytest.mark.parametrize("tutorial,script,args,block", [
-    ("shearFlowValidation", ["shearFlow.py"], ["settings", "ci", "EAM"],
+    ("shearFlowValidation", SHEAR_CASE, ["settings", "ci", "EAM"],
      "ci\n{"),
-    ("shearFlowValidation", ["shearFlow.py"], ["settings", "ci", "EAM"],
+    ("shearFlowValidation", SHEAR_CASE, ["settings", "ci", "EAM"],
      "common\n{"),
     ("verticalChannel", CHANNEL_CASE, ["settings", "smoke", "C1",
                                        "unladen"], "smoke\n{"),
@@ -60,7 +62,7 @@ def test_shear_step_out_of_range(tmp_path, foam_env, entry, value):
     case = tmp_path / "shearFlowValidation"
     shutil.copytree(ROOT / "tutorials" / "shearFlowValidation", case,
                     ignore=shutil.ignore_patterns("runs", "results"))
-    args = ["shearFlow.py", "settings", "ci", "detect" if "detect" in entry
+    args = [*SHEAR_CASE, "settings", "ci", "detect" if "detect" in entry
             else "EAM"]
     good = subprocess.run([sys.executable] + args, cwd=case,
                           capture_output=True, text=True)
@@ -78,7 +80,7 @@ def test_shear_step_out_of_range(tmp_path, foam_env, entry, value):
 
 
 @pytest.mark.parametrize("tutorial,cmd,script,args", [
-    ("shearFlowValidation", ["shearFlow.py"], "shearFlow",
+    ("shearFlowValidation", SHEAR_CASE, "shear.case.settings",
      ["settings", "ci", "EAM"]),
     ("verticalChannel", CHANNEL_CASE, "channel.case.settings",
      ["settings", "smoke", "C1", "unladen"]),
@@ -185,7 +187,7 @@ def test_shear_preset_values_checked(tmp_path, foam_env, entry, value,
                                      words):
     """The shear tutorial's presets likewise (writes 0 divided by zero)."""
     case = _edited(tmp_path, "shearFlowValidation", "ci\n{", entry, value)
-    res = subprocess.run([sys.executable, "shearFlow.py", "settings", "ci",
+    res = subprocess.run([sys.executable, *SHEAR_CASE, "settings", "ci",
                           "EAM"], cwd=case, capture_output=True, text=True)
     assert res.returncode == 1, res.stdout[-500:]
     assert "Traceback" not in res.stderr, res.stderr

@@ -1,4 +1,4 @@
-"""The Python driver of the shear tutorial (shearRuns.py, behind a thin
+"""The Python driver of the shear tutorial (shear.case.runs, behind a thin
 Allrun) writes the same files as the shell Allrun it replaced (its last
 version, commit 05291af; the fixes since 8967eb5 that the review asked
 for, e.g. the set-up marker `initialised`, change its outputs on
@@ -43,7 +43,7 @@ def run(tut, *args):
 
 
 #: What only the Python driver writes: the spinless replay of the first
-#: contacts (shearFirstContacts.py, added after the shell driver)
+#: contacts (shear.post.contacts, added after the shell driver)
 SPINLESS = ("firstContactsSpinless", "spinlessReplay", "firstSpinless")
 
 

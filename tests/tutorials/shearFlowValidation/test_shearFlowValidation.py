@@ -20,7 +20,7 @@ import pytest
 from aggloTools.runner import project_dir, tutorial_module
 
 TUT = project_dir() / "tutorials" / "shearFlowValidation"
-shearTheory = tutorial_module("shearFlowValidation", "shearTheory")
+theory = tutorial_module("shearFlowValidation", "shear.theory")
 
 
 def saturated_fraction(png):
@@ -38,15 +38,15 @@ def test_alpha_theory_matches_spec_table():
     """doc/cases.md B.2: f(1, 2, 4 um) = 0.95, 0.87, 0.79 (van de Ven & Mason),
     f(25 um) = 0.5785, the group 1.4538e-7 and alpha_th at the tabulated
     diameters."""
-    assert shearTheory.f_vdVM([1e-6, 2e-6, 4e-6]) == pytest.approx(
+    assert theory.f_vdVM([1e-6, 2e-6, 4e-6]) == pytest.approx(
         [0.95, 0.87, 0.79], abs=1e-12)
-    assert shearTheory.f_vdVM(25e-6) == pytest.approx(0.5785, abs=1e-4)
+    assert theory.f_vdVM(25e-6) == pytest.approx(0.5785, abs=1e-4)
     group = 8 * 2.28e-21 / (36 * math.pi * 1e-3 * 71 * (25e-6)**3)
     assert group == pytest.approx(1.4538e-7, rel=1e-4)
     table = {25: 3.401, 26: 3.303, 27: 3.212, 28: 3.126, 30: 2.970,
              31.50: 2.863}
     for d, a in table.items():
-        assert 100 * shearTheory.alpha_th(d * 1e-6) == pytest.approx(
+        assert 100 * theory.alpha_th(d * 1e-6) == pytest.approx(
             a, abs=6e-4)
 
 
@@ -54,7 +54,7 @@ def test_kernel_and_decay_match_spec():
     """K_ST = 1.4792e-12 m3/s, the initial rate 650/s, and the B.8
     recursion with K = K_ST and alpha = 0.034 over t*gammaDot = 1400:
     0.9942 (consistent) and 0.9885 (printed)."""
-    K = shearTheory.kernel_ST(25e-6)
+    K = theory.kernel_ST(25e-6)
     assert K == pytest.approx(1.4792e-12, rel=1e-4)
     V, N0, gamma = 6.4e-6, 75000, 71.0
     assert 0.5 * K * (N0 / V)**2 * V == pytest.approx(650.0, rel=1e-3)
@@ -62,7 +62,7 @@ def test_kernel_and_decay_match_spec():
     dn = np.full(n, 0.5 * K * N0**2 / V * dt)   # constant n (B.4)
     ns = np.full(n, N0)
     for form, end in (("consistent", 0.9942), ("printed", 0.9885)):
-        th = shearTheory.decay_theory(N0, dn, ns, 0.0340, form)
+        th = theory.decay_theory(N0, dn, ns, 0.0340, form)
         assert th[-1] / N0 == pytest.approx(end, abs=1e-4)
 
 
@@ -72,7 +72,7 @@ def test_decay_removes_alpha_particles_per_collision():
     N0, a = 1e6, 0.05
     dn = np.array([10.0])
     for form, c in (("consistent", 1), ("printed", 2)):
-        th = shearTheory.decay_theory(N0, dn, [N0], a, form)
+        th = theory.decay_theory(N0, dn, [N0], a, form)
         assert N0 - th[1] == pytest.approx(c * a * 10, rel=1e-5)
 
 
@@ -145,7 +145,7 @@ def test_ci_conservation_and_decay(ci_results):
 
 
 def test_ci_replay_of_the_event_logs(ci_results):
-    """shearReplay.py (doc/eventLog.md): every run's log holds its first
+    """shear.post.replay (doc/eventLog.md): every run's log holds its first
     contacts; the EAM and MAM runs' own kernels (e_n 0.97) agglomerate on
     replay as often as the runs' first contacts did, and a lower e_n never
     agglomerates less often on the same collisions (EAM: less rebound
@@ -169,7 +169,7 @@ def test_ci_replay_of_the_event_logs(ci_results):
 
 
 def test_ci_first_contacts_spinless_and_by_partner(ci_results):
-    """shearFirstContacts.py: the run's own kernel, replayed on its first
+    """shear.post.contacts: the run's own kernel, replayed on its first
     contacts as logged, agglomerates as often as the run counted; the
     subsets of primary pairs and pairs with an agglomerate add up to all;
     a ghost particle never spins, so the detect run's spinless replay is
@@ -203,7 +203,7 @@ def test_first_contacts_spin_reaches_the_eam_only(ci_results, tmp_path):
     constructed log): zeroing them changes EAM outcomes (its Eq. 21 holds
     the rotational energy), never the MAM's."""
     from aggloTools import eventlog
-    fc = tutorial_module("shearFlowValidation", "shearFirstContacts")
+    fc = tutorial_module("shearFlowValidation", "shear.post.contacts")
     _, s, tut = ci_results
     case = tmp_path / "EAM"
     shutil.copytree(tut / "runs/ci/EAM", case, ignore=shutil.ignore_patterns(
@@ -317,9 +317,9 @@ def test_kernel_coeffs_hold_only_the_runs_model(tmp_path, entry, ok):
     """A caseSettings' kernelCoeffs edited by hand to hold another entry
     than the run's own <model>Coeffs (agglomerationModel MAM would turn
     the EAM run into a MAM run unseen) is refused when the run is read."""
-    shear_case = tutorial_module("shearFlowValidation", "shearCase")
+    entries = tutorial_module("shearFlowValidation", "shear.case.entries")
     text = subprocess.run(
-        [str(project_dir() / ".venv/bin/python"), "shearFlow.py",
+        [str(project_dir() / ".venv/bin/python"), "-m", "shear.case",
          "settings", "ci", "EAM"], cwd=TUT, capture_output=True, text=True,
         check=True).stdout
     assert "kernelCoeffs        {  }" in text
@@ -328,9 +328,9 @@ def test_kernel_coeffs_hold_only_the_runs_model(tmp_path, entry, ok):
     f.write_text(text.replace("kernelCoeffs        {  }",
                               f"kernelCoeffs {{ {entry} }}"))
     if ok:
-        assert shear_case.read_settings(tmp_path)["agglomerationModel"] \
+        assert entries.read_settings(tmp_path)["agglomerationModel"] \
             == "EAM"
     else:
         with pytest.raises(SystemExit, match="kernelCoeffs may hold only "
                            "EAMCoeffs"):
-            shear_case.read_settings(tmp_path)
+            entries.read_settings(tmp_path)

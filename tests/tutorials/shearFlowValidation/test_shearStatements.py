@@ -1,10 +1,10 @@
-"""The statements of App. B (shearStatements.py), each a row that can fail:
+"""The statements of App. B (shear.post.statements), each a row that can fail:
 on a constructed pair of runs that the paper's words describe (EAM and
 MAM slightly below alpha_th, the EAM lower, alpha falling with time, the
 theory following both at first and dropping faster later, ...) every row
 passes; one edit per statement, the physics the words deny, makes its row
 and no other fail. The series are built here, step by step, as
-shearPost.Run.series writes them."""
+shear.post.postprocess.Run.series writes them."""
 
 import math
 
@@ -14,8 +14,8 @@ import pytest
 from aggloTools import regression as reg
 from aggloTools.runner import tutorial_module
 
-st = tutorial_module("shearFlowValidation", "shearStatements")
-theory = tutorial_module("shearFlowValidation", "shearTheory")
+st = tutorial_module("shearFlowValidation", "shear.post.statements")
+theory = tutorial_module("shearFlowValidation", "shear.theory")
 
 A_TH, GAMMA, NP0, STEPS = 0.034, 71.0, 100000, 1000
 

@@ -1,10 +1,10 @@
 """shearFlowValidation: the runs of the tutorial and the entries of their
-system/caseSettings, what the set-up (shearFlow.py) writes and the
-post-processing (shearPost.py, shearReplay.py, shearStudy.py) reads."""
+system/caseSettings, what the set-up (shear.case.settings) writes and
+the post-processing (shear.post, shear.post.replay, shear.study) reads."""
 
 from aggloTools import casesettings, eventlog
 
-import shearTheory
+from shear import theory
 
 #: The runs of a preset: detect (ghost contacts), EAM, MAM and the optional
 #: bounce (physical rebounds without agglomeration)
@@ -43,6 +43,6 @@ def logged_runs(runs_dir, script):
         print(f"{script}: no collision event logs under {runs_dir}")
         return None
     s = read_settings(runs_dir / runs[0])
-    a_th = float(shearTheory.alpha_th(float(s["dParticle"]),
+    a_th = float(theory.alpha_th(float(s["dParticle"]),
                                     float(s["gammaDot"])))
     return runs, s, a_th

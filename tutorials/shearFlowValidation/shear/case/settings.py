@@ -1,16 +1,19 @@
-#!/usr/bin/env python3
 """shearFlowValidation: set-up of the laminar shear-flow validation (paper
 Appendix B; doc/cases.md B.1-B.6) and the command line of the tutorial.
-The theory is in shearTheory.py, the post-processing in shearPost.py.
+The theory is in shear.theory, the post-processing in shear.post.
 
-    shearFlow.py settings PRESET RUN   caseSettings of one run (stdout)
-    shearFlow.py init CASE             exact Couette profile and particles
-    shearFlow.py settle CASE           set aside a last time folder whose
-                                       write was cut off (before a restart)
-    shearFlow.py progress CASE         simulated time and ETA of a run
-    shearFlow.py post PRESET           results/PRESET: summary.json, plots,
-                                       regression.txt (exit 1 on a FAIL;
-                                       shearPost.py)
+    python -m shear.case settings PRESET RUN
+        caseSettings of one run (stdout)
+    python -m shear.case init CASE
+        exact Couette profile and particles
+    python -m shear.case settle CASE
+        set aside a last time folder whose write was cut off (before a
+        restart)
+    python -m shear.case progress CASE
+        simulated time and ETA of a run
+    python -m shear.case post PRESET
+        results/PRESET: summary.json, plots, regression.txt (exit 1 on a
+        FAIL; shear.post)
 
 Runs: detect (ghost contacts, no agglomeration, first-contact counting, for
 the Saffman-Turner check), EAM, MAM, and optionally bounce (physical
@@ -18,7 +21,6 @@ rebounds, no agglomeration: the secondary first-contact check of B.6).
 """
 
 import argparse
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -27,10 +29,10 @@ from aggloTools import cloud, fields, placement, progress as prog, times
 from aggloTools import casesettings
 from aggloTools.foamfile import check_keys
 
-from shearCase import RUNS, read_settings
-from shearTheory import RHO_P
+from shear import TUTORIAL
+from shear.case.entries import RUNS, read_settings
+from shear.theory import RHO_P
 
-HERE = Path(__file__).resolve().parent
 
 # ---------------------------------------------------------------- settings
 
@@ -57,7 +59,7 @@ NUMBERS = {"nx": N(int, 1), "ny": N(int, 1), "nz": N(int, 1),
 def presets():
     """The presets file, every entry checked (its keys, and the numbers
     of NUMBERS: type and range)."""
-    ps = casesettings.read_presets(HERE / "presets", PRESET_KEYS,
+    ps = casesettings.read_presets(TUTORIAL / "presets", PRESET_KEYS,
                                    {"common": COMMON_KEYS})
     return {name: casesettings.checked(p, NUMBERS, f"presets/{name}")
             for name, p in ps.items()}
@@ -67,7 +69,7 @@ def on_off(v, where):
     return casesettings.choice(v, ("on", "off"), where)
 
 
-#: The readings a study may vary (shearStudy.py), with their values; the
+#: The readings a study may vary (shear/study/study.py), with their values; the
 #: first value is the study's baseline (the tutorial's default before the
 #: study; the tutorial's own readings are those of presets/common and the
 #: models' defaults: tutorial_readings). impactVelocity<model>: v_E or v_M
@@ -150,9 +152,9 @@ def settings(preset, run, variant=None):
     check_reading(dict(variant or {}), f"variant of {preset}/{run}")
     variant = dict(tutorial_readings(), **(variant or {}))
     ps = presets()
-    p = casesettings.named(ps, preset, "preset", "shearFlow.py",
+    p = casesettings.named(ps, preset, "preset", "shear.case",
                            exclude=("common",))
-    casesettings.choice(run, RUNS, "shearFlow.py: run")
+    casesettings.choice(run, RUNS, "shear.case: run")
     c = ps["common"]
     gamma, delta = float(c["gammaDot"]), float(c["delta"])
     detect = run == "detect"
@@ -187,7 +189,7 @@ def settings(preset, run, variant=None):
 
 
 def settings_text(s):
-    lines = ["// Written by shearFlow.py settings for the preset "
+    lines = ["// Written by python -m shear.case settings for the preset "
              f"{s['preset']}, run {s['run']}", ""]
     def body(d):
         return " ".join(f"{k} {{ {body(v)} }}" if isinstance(v, dict)
@@ -233,7 +235,7 @@ def init(case):
     x = random_positions(int(s["nParticles"]), d, (Lx, -delta, delta, Lz),
                          int(s["seed"]), 0.5 * d)
     cloud.write_cloud(case, x, d, RHO_P)
-    print(f"shearFlow.py init: {len(x)} particles, U = {gamma} y e_x in "
+    print(f"shear.case init: {len(x)} particles, U = {gamma} y e_x in "
           f"{nx}x{ny}x{nz} cells")
 
 def progress(case):
@@ -253,7 +255,7 @@ def progress(case):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="shearFlow.py", description=__doc__.split("\n\n")[0],
+        prog="shear.case", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
     s = sub.add_parser("settings", help="the caseSettings of one run, on "
@@ -267,7 +269,7 @@ def main(argv):
         sub.add_parser(name, help=what).add_argument(
             "case", help="the run's case folder")
     p = sub.add_parser("post", help="the report of a preset's runs "
-                       "(shearPost.py; exit 1 on a FAIL)")
+                       "(shear.post; exit 1 on a FAIL)")
     p.add_argument("preset", help="the preset")
     p.add_argument("runs", nargs="?", help="the folder holding its runs "
                    "(default runs/PRESET)")
@@ -283,10 +285,7 @@ def main(argv):
     elif a.cmd == "settle":
         times.set_aside_incomplete_times(a.case)
     else:
-        import shearPost
-        return shearPost.post(a.preset, a.runs or None, a.out or None)
+        from shear.post import postprocess
+        return postprocess.post(a.preset, a.runs or None, a.out or None)
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

@@ -1,5 +1,5 @@
 """shearFlowValidation: the sensitivity study's report (the result of
-shearStudy.post): study.txt, the runs' counts and alphas, the paper's
+study.post): study.txt, the runs' counts and alphas, the paper's
 statements per variant, the diagnosis of where the models part, and
 study.png."""
 
@@ -7,7 +7,7 @@ import numpy as np
 
 from aggloTools import regression as reg
 
-import shearStatements
+from shear.post import statements
 
 
 def _f(v, fmt=".3g"):
@@ -56,18 +56,18 @@ def study_table(res, models, diagnosed):
             n=v["undisturbedFirstContacts"]))
     cols = [reg.Column("variant", "variant", 24),
             reg.Column("reading", "reading", 72),
-            *[reg.Column(k, k, 4) for k in shearStatements.IDS],
+            *[reg.Column(k, k, 4) for k in statements.IDS],
             reg.Column("undisturbed a_first/a_th EAM", "uE", 29, ">", _f),
             reg.Column("MAM", "uM", 6, ">", _f),
             reg.Column("of", "n", 5, ">", str)]
-    lines += ["", "The paper's statements (shearStatements.py) and alpha "
+    lines += ["", "The paper's statements (shear.post.statements) and alpha "
               "per first contact on the undisturbed ensemble (the ghost "
               "run's first contacts replayed through the variant's "
               "kernels)", ""] + reg.table(srows, cols)
     for tag, cats in res.get("diagnosis", {}).items():
         run = diagnosed[tag]
         lines += ["", f"Diagnosis {tag} ({run}/EAM, its contacts replayed;"
-                  " shearDiagnosis.py): per category the agglomerating"
+                  " shear.study.diagnosis): per category the agglomerating"
                   " fraction under each kernel, and Eq. 21 with and without"
                   " its spin term (EAM, v_E = |u_n|)"]
         drows = [dict(cat=c, **r) for c, r in cats.items()]
@@ -116,7 +116,7 @@ def plots(res, out, models):
         ax.plot(x + 0.1 * (k - 0.5), u, "x", color=c,
                 label=f"{m}: first contacts, undisturbed ensemble")
     ax.axhline(1, color="k", lw=0.8)
-    ax.axhspan(*shearStatements.S1_BAND, color="0.9", zorder=0,
+    ax.axhspan(*statements.S1_BAND, color="0.9", zorder=0,
                label="S1 band")
     ax.set_yscale("log")
     ax.set_ylabel(r"$\alpha/\alpha_{th}$")

@@ -1,12 +1,11 @@
-#!/usr/bin/env python3
 """shearFlowValidation: the collision-event logs of a preset's runs
 replayed through EAM and MAM at e_n = 0.97, 0.80 and 0.60 (doc/eventLog.md):
 alpha per first contact of each run's own first-contact ensemble, with
 95 % intervals, against van de Ven & Mason's alpha_th.
 
-    shearReplay.py PRESET [OUT]   OUT (default results/PRESET): replay.json,
-                                  replay.txt, alphaReplay<run>.png
-                                  (nothing without logs)
+    python -m shear.post.replay PRESET [OUT]
+        OUT (default results/PRESET): replay.json, replay.txt,
+        alphaReplay<run>.png (nothing without logs)
 
 The replay freezes each run's collisions: every first contact meets its
 partner as it did in the run, only the outcome is computed anew; what a
@@ -22,16 +21,16 @@ from pathlib import Path
 from aggloTools import eventlog, regression as reg
 from aggloTools.eventlog import BASE, EN_SCAN as EN
 
-import shearCase
+from shear import TUTORIAL
+from shear.case import entries
 
-HERE = Path(__file__).resolve().parent
 MODELS = ("EAM", "MAM")
 
 
 def replay(preset, runs_dir=None, out_dir=None):
-    runs_dir = Path(runs_dir or HERE / "runs" / preset)
-    out = Path(out_dir or HERE / "results" / preset)
-    found = shearCase.logged_runs(runs_dir, "shearReplay.py")
+    runs_dir = Path(runs_dir or TUTORIAL / "runs" / preset)
+    out = Path(out_dir or TUTORIAL / "results" / preset)
+    found = entries.logged_runs(runs_dir, "shear.post.replay")
     if found is None:
         return None
     logs, _, a_th = found
@@ -56,7 +55,7 @@ def replay(preset, runs_dir=None, out_dir=None):
     text = eventlog.scan_table(
         f"shearFlowValidation {preset}: replay of the first contacts of"
         f" each run's collision-event log (doc/eventLog.md);"
-        f" alpha_th = {a_th:.4g}", rows, "shearReplay.py",
+        f" alpha_th = {a_th:.4g}", rows, "shear/post/replay.py",
         extra_columns=[reg.Column("alpha/alpha_th", "byTheory", 15, ">",
                                   lambda v: f"{v:.4g}")])
     (out / "replay.txt").write_text(text + "\n")
@@ -66,7 +65,7 @@ def replay(preset, runs_dir=None, out_dir=None):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="shearReplay.py", description=__doc__.split("\n\n")[0],
+        prog="shear.post.replay", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("preset", help="the preset whose runs are replayed")
     ap.add_argument("out", nargs="?", help="the output folder (default "

@@ -1,16 +1,16 @@
-#!/usr/bin/env python3
 """shearFlowValidation: the sensitivity study of the readings of the
 paper's Appendix B that its text leaves open (file study; doc/models.md
 2.6). Each variant is an EAM and a MAM run of a preset; the ghost detect
 runs (fluid torque on and off) give the undisturbed first contacts that
 each variant's kernels replay.
 
-    shearStudy.py list PRESET                 the runs: "variant run" lines
-    shearStudy.py settings PRESET VARIANT RUN caseSettings of one run
-    shearStudy.py post PRESET [OUT]           OUT (default
-                                              results/study[-PRESET]):
-                                              study.json, study.txt, plots
-                                              (exit 1 if a run is missing)
+    python -m shear.study list PRESET
+        the runs: "variant run" lines
+    python -m shear.study settings PRESET VARIANT RUN
+        caseSettings of one run
+    python -m shear.study post PRESET [OUT]
+        OUT (default results/study[-PRESET]): study.json, study.txt,
+        plots (exit 1 if a run is missing)
 
 Runs live in runs/<preset>/study/<variant>/<run>; ./Allrun -study runs
 them (resumable) and then the post-processing.
@@ -18,27 +18,23 @@ them (resumable) and then the post-processing.
 
 import argparse
 import json
-import math
-import sys
 from pathlib import Path
 
 import numpy as np
 
-from aggloTools import eventlog, regression as reg
+from aggloTools import eventlog
 from aggloTools.foamfile import check_keys, read_dict
 
-import shearDiagnosis
-import shearFlow
-import shearPost
-import shearStatements
-import shearTheory
-from shearStudyReport import plots, study_table
+from shear import TUTORIAL, theory
+from shear.case import settings
+from shear.post import postprocess, statements
+from shear.study import diagnosis
+from shear.study.report import plots, study_table
 
-HERE = Path(__file__).resolve().parent
 MODELS = ("EAM", "MAM")
 #: The study's baseline: the tutorial's readings before the study
 BASELINE = "normal-torque-dt0.005"
-#: The runs whose logs the diagnosis replays (shearDiagnosis.py)
+#: The runs whose logs the diagnosis replays (shear/study/diagnosis.py)
 DIAGNOSED = {"Baseline": BASELINE, "NoTorque": "normal-noTorque-dt0.005"}
 #: The undisturbed ensembles: ghost runs with the fluid torque on and off
 UNDISTURBED = {"on": "undisturbed", "off": "undisturbed-noTorque"}
@@ -57,9 +53,9 @@ def _number(x):
     return float(x) if not isinstance(x, (int, float)) else x
 
 
-def variants(path=HERE / "study"):
+def variants(path=TUTORIAL / "study"):
     """The declared variants, in order: name -> readings that differ from
-    the default (shearFlow.READINGS); the default is the first."""
+    the default (settings.READINGS); the default is the first."""
     d = read_dict(path)
     check_keys(d, {"matrix", "singles"}, str(path))
     m = d.get("matrix", {})
@@ -85,7 +81,7 @@ def variants(path=HERE / "study"):
              for k, x in v.items()}
         out[name] = v
     for name, v in out.items():
-        shearFlow.check_reading(v, f"{path}: variant {name}")
+        settings.check_reading(v, f"{path}: variant {name}")
     if BASELINE not in out:
         raise SystemExit(f"{path}: the matrix must hold the baseline "
                          f"{BASELINE}")
@@ -95,7 +91,7 @@ def variants(path=HERE / "study"):
 def full_reading(v):
     """A variant's every reading, defaults filled in."""
     out = {k: (c[0] if c else 0.005) for k, c in
-           shearFlow.READINGS.items()}
+           settings.READINGS.items()}
     out.update(v)
     return out
 
@@ -114,7 +110,7 @@ def run_list(preset):
 def canonical(preset, variant, run):
     """The first variant whose run has the same settings as this one."""
     def key(v):
-        s = dict(shearFlow.settings(preset, run, full_reading(v)))
+        s = dict(settings.settings(preset, run, full_reading(v)))
         s.pop("run")
         return s
     vs = variants()
@@ -128,13 +124,13 @@ def run_settings(preset, variant, run):
         if run != "detect":
             raise SystemExit(f"{variant} holds the detect run only")
         torque = [t for t, n in UNDISTURBED.items() if n == variant][0]
-        s = shearFlow.settings(preset, run, full_reading(
+        s = settings.settings(preset, run, full_reading(
             {"fluidTorque": torque}))
     elif variant in vs:
         if run not in MODELS:
             raise SystemExit(f"a variant holds the runs {MODELS}")
         # every reading given: independent of the tutorial's defaults
-        s = shearFlow.settings(preset, run, full_reading(vs[variant]))
+        s = settings.settings(preset, run, full_reading(vs[variant]))
     else:
         raise SystemExit(f"unknown variant {variant!r}: valid are "
                          + " ".join(list(UNDISTURBED.values()) + list(vs)))
@@ -155,13 +151,13 @@ def kernel_name(model, reading):
 
 def kernel_entries(model, reading):
     entries = {"agglomerationModel": model}
-    entries.update(shearFlow.kernel_coeffs(model, full_reading(reading)))
+    entries.update(settings.kernel_coeffs(model, full_reading(reading)))
     return entries
 
 
 def run_info(case, a_th):
     """The counts of one run: stats.dat and its collision-event log."""
-    r = shearPost.Run(case)
+    r = postprocess.Run(case)
     ev = eventlog.read_events(case)
     info = {"run": f"{case.parent.name}/{case.name}",
             "N_col": r.final("nCol"), "N_agg": r.final("nAgg")}
@@ -203,24 +199,24 @@ def undisturbed(runs_dir, vs):
 
 
 def post(preset, runs_dir=None, out_dir=None):
-    runs_dir = Path(runs_dir or HERE / "runs" / preset / "study")
-    out = Path(out_dir or HERE / "results" / ("study" if preset == "small"
+    runs_dir = Path(runs_dir or TUTORIAL / "runs" / preset / "study")
+    out = Path(out_dir or TUTORIAL / "results" / ("study" if preset == "small"
                                                else f"study-{preset}"))
     vs = variants()
     missing = [f"{v}/{r}" for v, r in run_list(preset)
                if not (runs_dir / v / r / "runTime").exists()]
     if missing:
-        print("shearStudy.py: runs not finished: " + " ".join(missing))
+        print("shear.study: runs not finished: " + " ".join(missing))
         return 1
-    d = shearFlow.settings(preset, "EAM")
-    a_th = float(shearTheory.alpha_th(d["dParticle"], d["gammaDot"]))
+    d = settings.settings(preset, "EAM")
+    a_th = float(theory.alpha_th(d["dParticle"], d["gammaDot"]))
     und = undisturbed(runs_dir, vs)
-    mine = shearFlow.tutorial_readings()
+    mine = settings.tutorial_readings()
     default = next((n for n, v in vs.items() if full_reading(v) == mine),
                    None)
     result = {"preset": preset, "alpha_th": a_th, "baseline": BASELINE,
               "default": default,
-              "statementsText": shearStatements.__doc__.strip(),
+              "statementsText": statements.__doc__.strip(),
               "variants": []}
     for name, v in vs.items():
         entry = {"name": name, "settings": full_reading(v)}
@@ -228,10 +224,10 @@ def post(preset, runs_dir=None, out_dir=None):
         for m in MODELS:
             case = runs_dir / canonical(preset, name, m) / m
             runs[m], entry[m] = run_info(case, a_th)
-        rows = shearStatements.statements(
+        rows = statements.statements(
             {m: runs[m].series(a_th) for m in MODELS}, a_th,
             gamma_dot=float(d["gammaDot"]))
-        entry["statements"] = shearStatements.verdicts(rows)
+        entry["statements"] = statements.verdicts(rows)
         entry["statementRows"] = rows
         tq = entry["settings"]["fluidTorque"]
         entry["undisturbedAlphaFirst"] = {
@@ -246,7 +242,7 @@ def post(preset, runs_dir=None, out_dir=None):
     # Where the models part: the EAM runs' contacts replayed through EAM
     # (both readings of v_E) and MAM
     result["diagnosis"] = {
-        tag: shearDiagnosis.diagnose(runs_dir / v / "EAM", out,
+        tag: diagnosis.diagnose(runs_dir / v / "EAM", out,
                                      tag)["categories"]
         for tag, v in DIAGNOSED.items() if v in vs}
     (out / "study.json").write_text(json.dumps(result, indent=1,
@@ -262,7 +258,7 @@ def post(preset, runs_dir=None, out_dir=None):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="shearStudy.py", description=__doc__.split("\n\n")[0],
+        prog="shear.study", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
     sub.add_parser("list", help="the study's runs, 'variant run' lines"
@@ -279,16 +275,13 @@ def main(argv):
                    "results/study[-PRESET])")
     a = ap.parse_args(argv)
     if a.cmd == "list":
-        shearFlow.presets()
+        settings.presets()
         for variant, run in run_list(a.preset):
             print(variant, run)
         return 0
     if a.cmd == "settings":
-        print(shearFlow.settings_text(run_settings(a.preset, a.variant,
+        print(settings.settings_text(run_settings(a.preset, a.variant,
                                                    a.run)))
         return 0
     return post(a.preset, None, a.out)
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

@@ -34,7 +34,7 @@ Each is PASS, FAIL or n/r (with the reason) against the tolerance stated
 in its row; a direction is judged against 3 sigma of the counts' noise
 (n/r within it); the bands are the paper's words made numbers, declared
 below, not fits. The statements read the time series of a run (series():
-shearPost.Run.series, or series.json beside a summary.json).
+postprocess.Run.series, or series.json beside a summary.json).
 """
 
 import json
@@ -43,7 +43,7 @@ import math
 import numpy as np
 
 from aggloTools import regression as reg
-from shearTheory import alpha_th as alpha_theory
+from shear.theory import alpha_th as alpha_theory
 
 #: S1: "slightly" below alpha_th: the band of alpha/alpha_th
 S1_BAND = (0.7, 1.0)
@@ -145,7 +145,7 @@ def from_summary(info, np0):
 
 def statements(series, alpha_th, unresolved=None, gamma_dot=None):
     """The rows of the statements for series {"EAM": s, "MAM": s} (dicts
-    of shearPost.Run.series, read_series or from_summary); unresolved:
+    of postprocess.Run.series, read_series or from_summary); unresolved:
     the reason why this set-up cannot judge them (every row n/r)."""
     e, m = series["EAM"], series["MAM"]
     rows = []

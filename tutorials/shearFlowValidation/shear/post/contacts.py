@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """shearFlowValidation: why the runs' first contacts agglomerate less
 often than the undisturbed ones (doc/models.md 2.6). The first contacts
 of each run's collision-event log differ from the ghost run's in two ways
@@ -18,7 +17,7 @@ the run's own contacts:
 What is left between the spinless primary pairs and the detect run's
 replay is the approach itself (and the noise of both ensembles).
 
-    shearFirstContacts.py PRESET [RUNS] [OUT]
+    python -m shear.post.contacts PRESET [RUNS] [OUT]
         RUNS: the folder holding the preset's runs (default runs/PRESET);
         OUT (default results/PRESET): firstContactsSpinless.json, .txt
 """
@@ -34,9 +33,9 @@ import numpy as np
 from aggloTools import eventlog, regression as reg
 from aggloTools.uncertainty import wilson
 
-import shearCase
+from shear import TUTORIAL
+from shear.case import entries
 
-HERE = Path(__file__).resolve().parent
 KERNELS = eventlog.en_variants((0.97,), ("EAM", "MAM"))
 #: The quantiles of the spin at contact that are reported
 QUANTILES = (0.1, 0.5, 0.9)
@@ -146,7 +145,7 @@ def table(res):
             reg.Column("only logged / only spinless", "pair", 28, ">")]
     lines = [f"shearFlowValidation {res['preset']}: alpha/alpha_th of the"
              " first contacts, as logged and with both spins zero"
-             f" (shearFirstContacts.py); alpha_th = {a_th:.4g}", ""]
+             f" (shear.post.contacts); alpha_th = {a_th:.4g}", ""]
     lines += reg.table(rows, cols)
     lines.append("")
     for name, e in res["ensembles"].items():
@@ -158,15 +157,15 @@ def table(res):
                       " / ".join(f"{v:.3g}" for v in q))
             + f"; median |u_n| {e['medianAbsUn']:.4g} m/s"
             if e["medianAbsUn"] is not None else f"{name}: no contacts")
-    lines += ["", "The replay freezes the contacts (shearReplay.py); only"
+    lines += ["", "The replay freezes the contacts (shear.post.replay); only"
               " the spins before the collision are changed."]
     return "\n".join(lines) + "\n"
 
 
 def measure(preset, runs_dir=None, out_dir=None):
-    runs_dir = Path(runs_dir or HERE / "runs" / preset)
-    out = Path(out_dir or HERE / "results" / preset)
-    found = shearCase.logged_runs(runs_dir, "shearFirstContacts.py")
+    runs_dir = Path(runs_dir or TUTORIAL / "runs" / preset)
+    out = Path(out_dir or TUTORIAL / "results" / preset)
+    found = entries.logged_runs(runs_dir, "shear.post.contacts")
     if found is None:
         return None
     runs, s, a_th = found
@@ -184,7 +183,7 @@ def measure(preset, runs_dir=None, out_dir=None):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="shearFirstContacts.py", description=__doc__.split("\n\n")[0],
+        prog="shear.post.contacts", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("preset", help="the preset whose runs are measured")
     ap.add_argument("runs", nargs="?", help="the folder holding its runs "

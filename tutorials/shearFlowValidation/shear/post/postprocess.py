@@ -1,30 +1,30 @@
 """shearFlowValidation: the post-processing of the runs (paper Appendix
 B; doc/cases.md B.4-B.6): each run's statistics, the regression rows
-(the paper's statements of App. B among them, shearStatements.py),
+(the paper's statements of App. B among them, shear.post.statements),
 summary.json, regression.txt and the plots of results/<preset>/.
 
-    shearPost.py PRESET [RUNS_DIR [OUT_DIR]]   (also: shearFlow.py post)
-    shearPost.py rejudge PRESET                the statements judged again
-                                               on results/PRESET/summary.json
+    python -m shear.post PRESET [RUNS_DIR [OUT_DIR]]
+        (also: python -m shear.case post)
+    python -m shear.post rejudge PRESET
+        the statements judged again on results/PRESET/summary.json
 """
 
 import argparse
 import json
 import math
 import re
-import sys
 from pathlib import Path
 
 import numpy as np
 
 from aggloTools import regression as reg, stats
 
-import shearStatements
-from shearCase import RUNS, read_settings
-from shearPlots import picture, plots
-from shearTheory import alpha_th, decay_theory, kernel_ST
+from shear import TUTORIAL
+from shear.case.entries import RUNS, read_settings
+from shear.post import statements
+from shear.post.plots import picture, plots
+from shear.theory import alpha_th, decay_theory, kernel_ST
 
-HERE = Path(__file__).resolve().parent
 
 
 class Run:
@@ -63,7 +63,7 @@ class Run:
                             form)[1:] / self.np0
 
     def series(self, alpha_th, n_max=1001):
-        """The time series the statements judge (shearStatements), at
+        """The time series the statements judge (shear.post.statements), at
         most n_max samples (every step's counters are cumulative, so a
         sample holds them exactly; the last step is always one): t gammaDot,
         N_p, the cumulative N_col, N_agg and first contacts, D10 and the
@@ -95,8 +95,8 @@ def row(name, value, expected, tol, ok, unit="", nr=None):
 
 
 def post(preset, runs_dir=None, out_dir=None):
-    runs_dir = Path(runs_dir or HERE / "runs" / preset)
-    out = Path(out_dir or HERE / "results" / preset)
+    runs_dir = Path(runs_dir or TUTORIAL / "runs" / preset)
+    out = Path(out_dir or TUTORIAL / "results" / preset)
     out.mkdir(parents=True, exist_ok=True)
     runs = {r: Run(runs_dir / r) for r in RUNS
             if (runs_dir / r / "postProcessing").exists()}
@@ -233,10 +233,10 @@ def post(preset, runs_dir=None, out_dir=None):
                              and np.all(np.diff(r.np_after) <= 0))))
 
     if len(phys) == 2:
-        # The paper's statements of App. B (shearStatements.py), judged on
+        # The paper's statements of App. B (shear.post.statements), judged on
         # the series kept in series.json (rejudge reads them back)
         series = {k: runs[k].series(a_th) for k in ("EAM", "MAM")}
-        (out / "series.json").write_text(shearStatements.series_text(
+        (out / "series.json").write_text(statements.series_text(
             series))
         rows += statement_rows(series, a_th, gamma,
                                min(runs[k].tg[-1] for k in ("EAM", "MAM")))
@@ -259,17 +259,17 @@ def fmt(v):
 
 
 def statement_rows(series, a_th, gamma, t_end_g):
-    """The statement rows of App. B (shearStatements.py) in the form of
+    """The statement rows of App. B (shear.post.statements) in the form of
     this regression table; n/r where the preset ends before the
     paper's duration."""
     short = (f"the paper's statements concern t*gammaDot = "
-             f"{shearStatements.PAPER_END:g}; this preset ends at "
-             f"{t_end_g:g}" if t_end_g < shearStatements.PAPER_END
+             f"{statements.PAPER_END:g}; this preset ends at "
+             f"{t_end_g:g}" if t_end_g < statements.PAPER_END
              * (1 - 1e-6) else None)
     return [row(f"{r['statement']}: {r['check']}", r["value"], "-",
                 r["tolerance"], {reg.PASS: True, reg.FAIL: False}.get(
                     r["status"]), nr=r.get("reason"))
-            for r in shearStatements.statements(series, a_th, short, gamma)]
+            for r in statements.statements(series, a_th, short, gamma)]
 
 
 def rejudge(preset, out_dir=None):
@@ -277,11 +277,11 @@ def rejudge(preset, out_dir=None):
     runs' series.json beside it (without it, the summary's final values:
     the rows that need the series n/r); summary.json and regression.txt
     rewritten."""
-    out = Path(out_dir or HERE / "results" / preset)
+    out = Path(out_dir or TUTORIAL / "results" / preset)
     summary = json.loads((out / "summary.json").read_text())
     runs = summary["runs"]
-    kept = shearStatements.read_series(out / "series.json")
-    series = {k: kept.get(k) or shearStatements.from_summary(
+    kept = statements.read_series(out / "series.json")
+    series = {k: kept.get(k) or statements.from_summary(
         runs[k], summary["N0"]) for k in ("EAM", "MAM")}
     t_end = min(runs[k]["tGamma_end"] for k in ("EAM", "MAM"))
     rows = [r for r in summary["regression"]
@@ -322,7 +322,7 @@ def regression_table(preset, rows):
 
 def main(argv):
     ap = argparse.ArgumentParser(
-        prog="shearPost.py", description=__doc__.split("\n\n")[0],
+        prog="shear.post", description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
     p = sub.add_parser("post", help="the report of a preset's runs (exit "
@@ -335,7 +335,7 @@ def main(argv):
     r = sub.add_parser("rejudge", help="the statements judged again on "
                        "results/PRESET/summary.json")
     r.add_argument("preset", help="the preset")
-    # 'shearPost.py PRESET ...' (no subcommand) is post
+    # 'python -m shear.post PRESET ...' (no subcommand) is post
     if argv and argv[0] not in ("post", "rejudge", "-h", "--help"):
         argv = ["post"] + list(argv)
     a = ap.parse_args(argv)
@@ -343,6 +343,3 @@ def main(argv):
         return rejudge(a.preset)
     return post(a.preset, a.runs or None, a.out or None)
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

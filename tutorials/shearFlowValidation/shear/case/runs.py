@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """shearFlowValidation: the paper's laminar shear-flow validation (Appendix B)
 against van de Ven & Mason theory and the Saffman-Turner collision kernel.
 
@@ -6,7 +5,7 @@ against van de Ven & Mason theory and the Saffman-Turner collision kernel.
              [-j N] [-post] [-every S] [-study] [-reference]
 
 Every run is a copy of this case under runs/<preset>/<run> (caseSettings
-written from the preset, blockMesh, shearFlow.py init, aggloPimpleFoam):
+written from the preset, blockMesh, shear.case init, aggloPimpleFoam):
   detect  ghost contacts, no agglomeration: first contacts vs K_ST (B.6)
   EAM     energy-based agglomeration model
   MAM     momentum-based agglomeration model
@@ -16,18 +15,18 @@ each printing a progress line with its ETA every S seconds (-every,
 default 60).
 An interrupted run continues from its last written time when Allrun is
 called again; finished runs are kept (remove runs/<preset> to redo).
-Then shearFlow.py post writes the report into runs/<preset>/report/
+Then shear.case post writes the report into runs/<preset>/report/
 (-reference: into results/<preset>/, the committed reference): summary.json,
 regression.txt (printed at the end), alpha.png, counts.png, decay.png,
-firstContacts.png, particlesEAM.png, particlesMAM.png; shearReplay.py
+firstContacts.png, particlesEAM.png, particlesMAM.png; shear.post.replay
 replays the runs' collision-event logs: replay.json, replay.txt,
-alphaReplay<run>.png; shearFirstContacts.py replays the first contacts
+alphaReplay<run>.png; shear.post.contacts replays the first contacts
 spinless and splits them by partner: firstContactsSpinless.json, .txt.
 -study runs the sensitivity study of the file study instead (each variant
 an EAM and a MAM run under runs/<preset>/study/, resumable) and writes
 runs/<preset>/study/report (-reference: results/study for small,
 results/study-<preset> otherwise): study.json, study.txt, plots
-(shearStudy.py, doc/models.md 2.6).
+(shear.study, doc/models.md 2.6).
 Serial run times on one core of the 2-core development machine: README.md.
 Ctrl-C stops every run it started (exit status 130); they continue from
 their last complete write on the next call.
@@ -40,15 +39,14 @@ import shutil
 import sys
 import time
 import traceback
-from pathlib import Path
 
 from aggloTools import runtimes, stages, times
-from aggloTools.runner import foam_bin
+from aggloTools.runner import foam_bin, package_command
 
-import shearFlow
-import shearStudy
+from shear import TUTORIAL
+from shear.case import settings
+from shear.study import study
 
-HERE = Path(__file__).resolve().parent
 
 
 def options(argv):
@@ -68,13 +66,13 @@ def settings_text(a, run):
     """The caseSettings of a run (a study run: 'variant/run')."""
     if a.study:
         variant, name = run.split("/")
-        return shearFlow.settings_text(
-            shearStudy.run_settings(a.preset, variant, name))
-    return shearFlow.settings_text(shearFlow.settings(a.preset, run))
+        return settings.settings_text(
+            study.run_settings(a.preset, variant, name))
+    return settings.settings_text(settings.settings(a.preset, run))
 
 
 def run_dir(a, run):
-    return HERE / "runs" / a.preset / ("study" if a.study else "") / run
+    return TUTORIAL / "runs" / a.preset / ("study" if a.study else "") / run
 
 
 def run_one(a, run):
@@ -90,13 +88,13 @@ def run_one(a, run):
             shutil.rmtree(d)
         d.mkdir(parents=True)
         for name in ("0.orig", "constant", "system"):
-            shutil.copytree(HERE / name, d / name)
-        shutil.copytree(HERE / "0.orig", d / "0")
+            shutil.copytree(TUTORIAL / name, d / name)
+        shutil.copytree(TUTORIAL / "0.orig", d / "0")
         (d / "system" / "caseSettings").write_text(settings_text(a, run)
                                                    + "\n")
         stages.run_logged(["blockMesh"], d, "log.blockMesh")
-        stages.run_logged([sys.executable, HERE / "shearFlow.py", "init",
-                           "."], d, "log.python.init")
+        stages.run_logged(package_command(TUTORIAL, "shear.case", "init",
+                                          "."), d, "log.python.init")
         (d / "initialised").touch()
     else:
         print(f"    {run}: continuing from the last written time",
@@ -109,15 +107,15 @@ def run_one(a, run):
             print(f"    {run}: {line}", flush=True)
         append = True
     wall = stages.run_solver(d, [foam_bin("aggloPimpleFoam")], run,
-                             shearFlow.progress, a.every, append=append)
+                             settings.progress, a.every, append=append)
     (d / "runTime").write_text(f"{round(wall)}\n")
     print(f"    {run}: done in {round(wall)} s", flush=True)
 
 
 def work(a):
     if a.study:
-        shearFlow.presets()
-        runs = [f"{v}/{r}" for v, r in shearStudy.run_list(a.preset)]
+        settings.presets()
+        runs = [f"{v}/{r}" for v, r in study.run_list(a.preset)]
     else:
         runs = a.runs.split()
     # The preset and the runs checked before anything starts
@@ -137,10 +135,10 @@ def work(a):
 
         def one(run):
             print(f"    {run}: started (log: "
-                  f"{run_dir(a, run).relative_to(HERE)}/"
+                  f"{run_dir(a, run).relative_to(TUTORIAL)}/"
                   "log.aggloPimpleFoam)", flush=True)
             run_one(a, run)
-        with stages.one_run(HERE / "runs" / a.preset,
+        with stages.one_run(TUTORIAL / "runs" / a.preset,
                             f"shearFlowValidation -preset {a.preset}"):
             failed = stages.pool(runs, one, a.j)
         if failed:
@@ -154,30 +152,31 @@ def work(a):
         if a.reference:
             out = "results/study" if a.preset == "small" \
                 else f"results/study-{a.preset}"
-        status = shearStudy.post(a.preset, None, out)
+        status = study.post(a.preset, None, out)
         print(runtimes.line(job, time.monotonic() - start, whole))
         return status
 
     out = f"runs/{a.preset}/report" if not a.reference \
         else f"results/{a.preset}"
-    status = shearFlow.main(["post", a.preset, "", out])
+    status = settings.main(["post", a.preset, "", out])
     # The collision-event logs replayed through EAM and MAM at three e_n,
     # and the first contacts as logged and spinless
     print()
     try:
-        import shearReplay
-        shearReplay.replay(a.preset, None, out)
+        from shear.post import replay
+        replay.replay(a.preset, None, out)
         print()
-        import shearFirstContacts
-        shearFirstContacts.measure(a.preset, None, out)
+        from shear.post import contacts
+        contacts.measure(a.preset, None, out)
     except Exception:
         traceback.print_exc()
         status = 1
     print()
-    print(f"Results: {HERE / out} (regression.txt, summary.json, *.png)")
+    print(f"Results: {TUTORIAL / out} (regression.txt, summary.json, *.png)")
     print(runtimes.line(job, time.monotonic() - start, whole))
     return status
 
 
-if __name__ == "__main__":
-    sys.exit(stages.drive(HERE, options, work, sys.argv[1:]))
+def main(argv):
+    """The driver (python -m shear, ./Allrun) on the options argv."""
+    return stages.drive(TUTORIAL, options, work, argv)

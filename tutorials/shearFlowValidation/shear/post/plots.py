@@ -1,11 +1,11 @@
 """shearFlowValidation: the plots of a preset's report (paper Appendix B;
 doc/cases.md B.4-B.6): agglomeration and decay against theory, and the
-particle picture; called by shearPost.post."""
+particle picture; called by postprocess.post."""
 
 import numpy as np
 
 from aggloTools import cloud, render, times
-from shearTheory import alpha_th
+from shear.theory import alpha_th
 
 
 def plots(runs, out, a_th, K_ST, n0, gamma):

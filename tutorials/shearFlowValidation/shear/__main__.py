@@ -1,0 +1,7 @@
+"""python -m shear: the tutorial's runs and report (./Allrun)."""
+
+import sys
+
+from shear.case import runs
+
+sys.exit(runs.main(sys.argv[1:]))
