@@ -5,11 +5,10 @@
     particleGrid and the bruteForce oracle give exactly the candidate
     pairs found here independently, by a hand-written O(N^2) loop over
     every periodic image: the pairs whose swept boxes (inflated by
-    1.1 d/2) overlap; run-time selection names the searches and rejects a
-    misspelt one and interactionDistance with another search;
-    interactionLists, whose cells are the bins, visits a superset of
-    those pairs at the search distance of the stage (d_max + 2 max|dx|
-    per axis, inflated as the boxes are).
+    1.1 d/2) overlap; interactionLists, whose cells are the bins, visits
+    a superset of those pairs at the search distance of the stage (d_max
+    + 2 max|dx| per axis, inflated as the boxes are). Their run-time
+    selection: testPairSearchSelection.C.
 \*---------------------------------------------------------------------------*/
 
 #include "ParticleGridPairSearch.H"
@@ -365,50 +364,3 @@ TEST(pairSearch, interactionListsCoversOracle)
     }
 }
 
-
-namespace
-{
-
-std::string selectionError(const std::string& text)
-{
-    try
-    {
-        autoPtr<Time> runTime(Time::New());
-        autoPtr<polyMesh> mesh(boxMesh(runTime(), true));
-        IStringStream is(text);
-        searchType::New(dictionary(is), mesh(), "U");
-    }
-    catch (const Foam::error& err)
-    {
-        return std::string(err.message());
-    }
-    return "";
-}
-
-} // End anonymous namespace
-
-
-TEST(pairSearch, selection)
-{
-    autoPtr<Time> runTime(Time::New());
-    autoPtr<polyMesh> mesh(boxMesh(runTime(), true));
-    {
-        IStringStream is("");
-        EXPECT_EQ(searchType::New(dictionary(is), mesh(), "U")->type(),
-                  "particleGrid");
-    }
-    {
-        IStringStream is("pairSearch bruteForce;");
-        EXPECT_EQ(searchType::New(dictionary(is), mesh(), "U")->type(),
-                  "bruteForce");
-    }
-
-    const std::string bad(selectionError("pairSearch grid;"));
-    EXPECT_NE(bad.find("grid"), std::string::npos) << bad;
-    EXPECT_NE(bad.find("particleGrid"), std::string::npos) << bad;
-    EXPECT_NE(bad.find("interactionLists"), std::string::npos) << bad;
-
-    const std::string dist(selectionError("interactionDistance 1e-4;"));
-    EXPECT_NE(dist.find("interactionDistance"), std::string::npos) << dist;
-    EXPECT_NE(dist.find("particleGrid"), std::string::npos) << dist;
-}
