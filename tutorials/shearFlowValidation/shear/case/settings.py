@@ -69,7 +69,7 @@ def on_off(v, where):
     return casesettings.choice(v, ("on", "off"), where)
 
 
-#: The readings a study may vary (shear/study/study.py), with their values; the
+#: The readings a study may vary (shear.study), with their values; the
 #: first value is the study's baseline (the tutorial's default before the
 #: study; the tutorial's own readings are those of presets/common and the
 #: models' defaults: tutorial_readings). impactVelocity<model>: v_E or v_M

@@ -1,6 +1,6 @@
 """shearFlowValidation: the plots of a preset's report (paper Appendix B;
 doc/cases.md B.4-B.6): agglomeration and decay against theory, and the
-particle picture; called by postprocess.post."""
+particle picture; called by shear.post.postprocess.post."""
 
 import numpy as np
 

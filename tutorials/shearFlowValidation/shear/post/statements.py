@@ -34,7 +34,7 @@ Each is PASS, FAIL or n/r (with the reason) against the tolerance stated
 in its row; a direction is judged against 3 sigma of the counts' noise
 (n/r within it); the bands are the paper's words made numbers, declared
 below, not fits. The statements read the time series of a run (series():
-postprocess.Run.series, or series.json beside a summary.json).
+shear.post.postprocess.Run.series, or series.json beside a summary.json).
 """
 
 import json
@@ -145,8 +145,9 @@ def from_summary(info, np0):
 
 def statements(series, alpha_th, unresolved=None, gamma_dot=None):
     """The rows of the statements for series {"EAM": s, "MAM": s} (dicts
-    of postprocess.Run.series, read_series or from_summary); unresolved:
-    the reason why this set-up cannot judge them (every row n/r)."""
+    of shear.post.postprocess.Run.series, read_series or from_summary);
+    unresolved: the reason why this set-up cannot judge them (every row
+    n/r)."""
     e, m = series["EAM"], series["MAM"]
     rows = []
     last = len(e["tg"]) - 1

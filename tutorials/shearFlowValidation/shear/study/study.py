@@ -34,7 +34,7 @@ from shear.study.report import plots, study_table
 MODELS = ("EAM", "MAM")
 #: The study's baseline: the tutorial's readings before the study
 BASELINE = "normal-torque-dt0.005"
-#: The runs whose logs the diagnosis replays (shear/study/diagnosis.py)
+#: The runs whose logs the diagnosis replays (shear.study.diagnosis)
 DIAGNOSED = {"Baseline": BASELINE, "NoTorque": "normal-noTorque-dt0.005"}
 #: The undisturbed ensembles: ghost runs with the fluid torque on and off
 UNDISTURBED = {"on": "undisturbed", "off": "undisturbed-noTorque"}
