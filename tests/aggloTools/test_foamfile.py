@@ -106,7 +106,11 @@ def test_merged():
                         "g": 6})
     assert out == {"a": {"c": {"d": 2, "x": 4}}, "e": {"f": 5}, "g": 6}
     assert base == {"a": {"b": 1, "c": {"d": 2}}, "e": 3}   # untouched
-    assert merged(base, None) == base
+    copy = merged(base, None)
+    assert copy == base
+    copy["a"]["c"]["d"] = 7                 # a deep copy: base unchanged
+    assert base["a"]["c"]["d"] == 2
+    assert boxcase.kernel()["material"] is not boxcase.MATERIAL
 
 
 def test_box_case_writes_the_dicts_it_is_given(tmp_path):

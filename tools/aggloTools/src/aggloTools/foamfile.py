@@ -191,16 +191,20 @@ def dict_text(d, indent=0):
     return "".join(out)
 
 
-def merged(base, changes):
-    """A copy of the nested dict base with changes applied: a dict merges
-    into a sub-dictionary entry by entry, None removes the entry, any
-    other value replaces it (or is added, at the end)."""
-    out = dict(base)
+def merged(base, changes=None):
+    """A copy of the nested dict base (every sub-dictionary copied: the
+    result can be changed without changing base) with changes applied: a
+    dict merges into a sub-dictionary entry by entry, None removes the
+    entry, any other value replaces it (or is added, at the end)."""
+    out = {k: merged(v) if isinstance(v, dict) else v
+           for k, v in base.items()}
     for key, v in (changes or {}).items():
         if v is None:
             out.pop(key, None)
         elif isinstance(v, dict) and isinstance(out.get(key), dict):
             out[key] = merged(out[key], v)
+        elif isinstance(v, dict):
+            out[key] = merged(v)
         else:
             out[key] = v
     return out
