@@ -6,7 +6,9 @@ purpose), for the `ci` preset and for `-post` after it: every file of
 runs/ci byte for byte, apart from the logs (time stamps, paths), the run
 times and the case paths that the replays record, and for `-study` with
 one variant. Both drivers run in copies of today's tutorial, so only the
-driver differs (about 3 min)."""
+driver differs (about 3 min): the old Allrun's shearFlow.py, shearStudy.py
+and shearReplay.py are two-line scripts that run today's shear.case,
+shear.study and shear.post.replay."""
 
 import json
 import os
@@ -41,6 +43,10 @@ def run(tut, *args):
                           capture_output=True, text=True, timeout=900,
                           env=dict(os.environ, PWD=str(tut)))
 
+
+#: The scripts the old Allrun calls and the package's modules they became
+SCRIPTS = {"shearFlow.py": "shear.case", "shearStudy.py": "shear.study",
+           "shearReplay.py": "shear.post.replay"}
 
 #: What only the Python driver writes: the spinless replay of the first
 #: contacts (shear.post.contacts, added after the shell driver)
@@ -80,6 +86,13 @@ def test_python_driver_writes_what_the_shell_driver_wrote(tmp_path,
     old = copy(tmp_path / "old" / "shearFlowValidation")
     new = copy(tmp_path / "new" / "shearFlowValidation")
     (old / "Allrun").write_text(script)
+    # The old Allrun calls scripts that are now the package's modules: the
+    # same code, reached by their old names
+    for name, module in SCRIPTS.items():
+        (old / name).write_text(
+            "import runpy\n"
+            f"runpy.run_module({module!r}, run_name='__main__', "
+            "alter_sys=True)\n")
     for tut in (old, new):
         res = run(tut)
         assert res.returncode == 0, res.stdout[-2000:] + res.stderr
