@@ -10,6 +10,7 @@ import os
 import shutil
 import subprocess
 
+import numpy as np
 import pytest
 
 from aggloTools import times
@@ -33,7 +34,7 @@ def test_two_rank_two_way_restart_repeats(smoke_runs, tmp_path):
 
     def restart(perturb=False):
         """The stage from `start` to `end` in a fresh copy; perturb: the
-        first cell's velocity changed in its last digit (the control)."""
+        first cell's velocity changed in its last bit (the control)."""
         case = tmp_path / "case"
         shutil.rmtree(case, ignore_errors=True)
         shutil.copytree(src, case, ignore=shutil.ignore_patterns(
@@ -45,9 +46,15 @@ def test_two_rank_two_way_restart_repeats(smoke_runs, tmp_path):
         if perturb:
             u = case / "processor0" / start / "U"
             text = u.read_text()
-            first = text.index("\n(", text.index("internalField")) + 3
-            u.write_text(text[:first] + text[first:].replace(
-                "3 ", "4 ", 1))
+            # the first cell's u_x: after "(" of the list and of its vector
+            first = text.index("\n(", text.index("internalField")) + 4
+            end_ = text.index(" ", first)
+            u_x = float(text[first:end_])
+            # the next double: a change that reading cannot round away
+            # (a changed 17th digit may name the same double)
+            u.write_text(text[:first]
+                         + repr(float(np.nextafter(u_x, np.inf)))
+                         + text[end_:])
         settings = case / "system" / "caseSettings"
         settings.write_text("".join(
             f"endTime         {end};\n" if ln.startswith("endTime")
@@ -60,7 +67,7 @@ def test_two_rank_two_way_restart_repeats(smoke_runs, tmp_path):
                                                 / end).items()
                        if b != stored[r].get(f)) for r in (0, 1)]
 
-    # the control: a change in the 16th digit of one cell's velocity
+    # the control: a change in the last bit of one cell's velocity
     # shows in the written state
     assert any(restart(perturb=True))
     differ = [(k, d) for k in range(REPEATS) for d in [restart()]
