@@ -21,7 +21,7 @@ DRIVER_JOBS = ["verticalChannel small C1 -np 2",
 
 
 def readme(tmp_path, rows):
-    p = tmp_path / "README.md"
+    p = tmp_path.joinpath("README.md")
     p.write_text("# x\n\n## Run times\n\n| job | what | time |\n"
                  "|---|---|---|\n" + "".join(rows) + "\n## Next\n"
                  "| `ignored` | after the section | 1 h |\n")
@@ -116,7 +116,7 @@ def test_readmes_hold_no_history():
     """README.md, bench/README.md and the tutorials' READMEs state the
     current state: no commit hash, no date (CHANGELOG.md holds the
     history)."""
-    files = [ROOT / "README.md", ROOT / "bench" / "README.md",
+    files = [ROOT.joinpath("README.md"), ROOT.joinpath("bench", "README.md"),
              *sorted(ROOT.glob("tutorials/*/README.md"))]
     found = []
     for f in files:
