@@ -37,6 +37,8 @@ which only -reference rewrites); the VTK files of
 the last time are under runs/<preset>/<config>/.../VTK (foamToVTK);
 channel.post.replay replays the agglomeration stages' collision-event logs
 (replay.json, replay.txt, alphaReplay<config><cloud>.png).
+A preset with break-up: channel.post.breakup (breakup.txt, breakup.json,
+breakupHistory.png, breakupSizes.png).
 Ctrl-C stops every run it started (exit status 130).
 Run times on the 2-core development machine: README.md.
 """
@@ -49,7 +51,7 @@ import sys
 import time
 from pathlib import Path
 
-from aggloTools import runtimes, stages, times
+from aggloTools import progress as prog, runtimes, stages, times
 from aggloTools.runner import CommandError, package_command
 
 from channel import TUTORIAL
@@ -75,6 +77,21 @@ def options(argv):
     return a
 
 
+def progress(case):
+    """One line: stage, T*, fraction done and ETA from the solver log."""
+    case = Path(case)
+    s = settings.read_settings(case)
+    p = settings.preset(s["preset"])
+    t_end = float(s["endTime"])
+    now = prog.solver_progress(case / "log.aggloPimpleFoam", t_end,
+                               p["deltaT"])
+    if now is None:
+        return "starting"
+    t, frac, eta = now
+    return (f"{s['stage']}: T* = {t / p['tScale']:.2f}, stage ends at "
+            f"{t_end / p['tScale']:.2f} " + prog.line(frac, eta))
+
+
 class Channel:
     """The stages of one call: the preset, the ranks, the progress."""
 
@@ -82,6 +99,9 @@ class Channel:
         self.a = a
         self.base = Path("runs") / a.preset
         self.whole = True   # every stage run from its start in this call
+        # where the stages before agglomeration are: runs/<stagesFrom>
+        self.shared = settings.preset(a.preset)["stagesFrom"] or a.preset
+        self.stages_base = Path("runs") / self.shared
 
     def settings(self, d, config, stage, models=()):
         (d / "system" / "caseSettings").write_text(
@@ -120,7 +140,7 @@ class Channel:
         if np > 1:
             cmd = ["mpirun", "-n", str(np), "aggloPimpleFoam", "-parallel"]
         try:
-            wall = stages.run_solver(d, cmd, tag, settings.progress,
+            wall = stages.run_solver(d, cmd, tag, progress,
                                      self.a.every, append=True)
         except CommandError:
             raise CommandError(f"aggloPimpleFoam failed, see "
@@ -133,6 +153,11 @@ class Channel:
 
     def unladen(self):
         """The single-phase LES shared by every configuration."""
+        if self.shared != self.a.preset:
+            print(f"    unladen: preset {self.shared}'s "
+                  f"({self.stages_base}/unladen)", flush=True)
+            self.whole = False
+            return
         d = self.base / "unladen"
         if (d / "done.unladen").is_file():
             print("    unladen: finished before, kept", flush=True)
@@ -151,8 +176,17 @@ class Channel:
     def configuration(self, c):
         """Release, dispersion and agglomeration of one configuration."""
         np = self.a.np
-        d = self.base / c / "dispersion"
-        if not (d / "released").is_file():
+        d = self.stages_base / c / "dispersion"
+        if self.shared != self.a.preset:
+            self.whole = False
+            if not (d / "done.dispersion").is_file():
+                raise CommandError(
+                    f"{d} has not finished its dispersion stage, which this"
+                    f" preset branches from (stagesFrom {self.shared}): "
+                    f"./Allrun -preset {self.shared} -configs {c} first")
+            print(f"    {c}: release and dispersion: preset {self.shared}'s"
+                  f" ({d})", flush=True)
+        elif not (d / "released").is_file():
             t = stages.branch_case(self.base / "unladen", d, np,
                                    extra_constant=Path("constant"))
             self.settings(d, c, "release")
@@ -165,13 +199,17 @@ class Channel:
             self.python(d, "release", "channel.case.particles", "release",
                         ".")
             (d / "released").touch()
-        self.stage(d, "release", c)
-        self.stage(d, "dispersion", c)
+        if self.shared == self.a.preset:
+            self.stage(d, "release", c)
+            self.stage(d, "dispersion", c)
 
-        seeded = settings.preset(self.a.preset)["seededPairs"]
+        p = settings.preset(self.a.preset)
+        seeded = p["seededPairs"]
         two_way = bool(settings.configuration(c)["twoWay"])
-        for models in ((("EAM",), ("MAM",)) if two_way
-                       else (("EAM", "MAM"),)):
+        # two-way coupled: one run per model (each model's cloud moves the
+        # fluid its own way); one-way: the models' clouds in one run
+        for models in (tuple((m,) for m in p["models"]) if two_way
+                       else (p["models"],)):
             adir = self.base / c / ("agglomeration-" + models[0]
                                     if two_way else "agglomeration")
             if not (adir / "branched").is_file():
@@ -265,6 +303,12 @@ def work(a):
     if subprocess.call([sys.executable, "-m", "channel.post.replay", a.preset,
                         *ref]):
         status = 1
+    # The break-ups, where the preset breaks agglomerates
+    if settings.preset(a.preset)["breakup"] != "none":
+        print(flush=True)
+        if subprocess.call([sys.executable, "-m", "channel.post.breakup",
+                            a.preset, *ref]):
+            status = 1
     report = f"results/{a.preset}" if a.reference \
         else f"runs/{a.preset}/report"
     print()

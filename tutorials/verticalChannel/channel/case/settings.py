@@ -8,16 +8,18 @@
                                   divergence-free perturbations (at time 0)
 
 The particles (release, the smoke preset's seeded pairs, the branch into
-one cloud per model): channel.case.particles. The stages are run by
-channelRuns.py (./Allrun), which calls progress, preset and
-configuration directly.
+one cloud per model): channel.case.particles; the break-up entry:
+channel.case.breakup. The stages are run by channel.case.runs
+(./Allrun), which calls preset and configuration directly.
 
 Post-processing: channel.post PRESET.
 
 Stages: unladen (single phase), release and dispersion (one cloud
 "particles", collisions on, agglomeration off), agglomeration (clouds EAM
-and MAM in one run for one-way coupled configurations, one per run for the
-two-way coupled ones; counters zeroed at its start).
+and MAM, or the preset's `models`, in one run for one-way coupled
+configurations, one per run for the two-way coupled ones; counters zeroed
+at its start). A preset with `stagesFrom NAME` runs the agglomeration
+stage only, branched from runs/NAME's dispersion (shared_stages).
 """
 
 import argparse
@@ -27,10 +29,9 @@ from pathlib import Path
 
 import numpy as np
 
-from aggloTools import casesettings, fields, progress as prog
-from aggloTools.foamfile import entry_text, read_dict
-
+from aggloTools import casesettings, fields
 from channel import TUTORIAL
+from channel.case.breakup import breakup_entry, breakup_models
 
 
 def report_dir(pname, reference=False):
@@ -65,7 +66,8 @@ COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
                "purgeWrite", "eventLog", "UTolerance", "breakup"}
 PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "unladen", "release", "dispersion", "agglomeration", "window",
-               "writeStar", "profileBins", "seededPairs"} | COMMON_KEYS
+               "writeStar", "profileBins", "seededPairs", "models",
+               "stagesFrom"} | COMMON_KEYS
 CONFIGURATION_KEYS = {"subModels", "wall", "d", "en"}
 N = casesettings.Number
 #: What each numeric entry must be (the window is checked against the
@@ -117,30 +119,46 @@ def preset(name):
     for key, valid in choices.items():
         casesettings.choice(p[key], valid,
                             f"channel.case: presets/{name}: {key}")
+    # The agglomeration models run, (EAM MAM) unless the preset says
+    m = p.get("models", MODELS)
+    m = " ".join(map(str, m if isinstance(m, (list, tuple)) else [m]))
+    p["models"] = tuple(m.replace("(", " ").replace(")", " ").split())
+    for m in p["models"] or ("()",):
+        casesettings.choice(m, MODELS, f"channel.case: presets/{name}: "
+                            "models: each of them")
+    if len(set(p["models"])) < len(p["models"]):
+        sys.exit(f"channel.case: presets/{name}: models names a model twice")
+    p["stagesFrom"] = shared_stages(p)
     return p
 
 
-#: The break-up models a preset may name (`breakup NAME;`)
-BREAKUP_MODELS = TUTORIAL / "breakupModels"
+#: What a preset whose earlier stages are another's (stagesFrom) may
+#: change: the entries that act in the agglomeration stage alone
+AGGLOMERATION_ONLY = {"breakup", "eventLog", "models", "stagesFrom",
+                      "name"}
 
 
-def breakup_models():
-    """The names of the entries of breakupModels."""
-    try:
-        d = read_dict(BREAKUP_MODELS)
-    except ValueError as e:
-        sys.exit(f"channel.case: {e}")
-    return tuple(d)
-
-
-def breakup_entry(p, stage):
-    """The caseSettings text of the stage's break-up: the preset's model
-    (breakupModels) in the agglomeration stage, none before it."""
-    name = p["breakup"] if stage == "agglomeration" else "none"
-    body = entry_text(BREAKUP_MODELS.read_text(), name)
-    # the entry's lines as breakupModels indents them (its first one's
-    # indentation stripped)
-    return "breakup\n{\n    " + body + "\n}"
+def shared_stages(p):
+    """The preset whose unladen, release and dispersion runs (runs/NAME)
+    the preset p branches its agglomeration stages from: None where p runs
+    its own, else its `stagesFrom`, which must be a preset of its own
+    stages that equals p in every entry but AGGLOMERATION_ONLY (so these
+    stages are exactly the ones p would run)."""
+    name, base = p["name"], p.get("stagesFrom")
+    if base is None or base == name:
+        return None
+    b = preset(str(base))
+    where = f"channel.case: presets/{name}: stagesFrom {base}"
+    if b["stagesFrom"] is not None:
+        sys.exit(f"{where}: that preset takes its stages from "
+                 f"{b['stagesFrom']}: name that one")
+    differ = sorted(k for k in set(p) | set(b) if k not in
+                    AGGLOMERATION_ONLY and p.get(k) != b.get(k))
+    if differ:
+        sys.exit(f"{where}: its stages before agglomeration would differ "
+                 f"from this preset's in {' '.join(differ)} (only "
+                 f"{' '.join(sorted(AGGLOMERATION_ONLY - {'name'}))} may)")
+    return str(base)
 
 
 def configuration(name):
@@ -178,7 +196,7 @@ def settings(pname, cname, stage, models=(), nprocs=1):
         casesettings.choice(m, MODELS, "channel.case: model")
     if stage == "agglomeration":
         if not models:
-            models = ("EAM",) if c["twoWay"] else MODELS
+            models = p["models"][:1] if c["twoWay"] else p["models"]
         if c["twoWay"] and len(models) != 1:
             sys.exit("channel.case: a two-way coupled configuration runs one"
                      " agglomeration model per run")
@@ -338,23 +356,6 @@ def init(case):
                     * np.sin(kz * z))
     U += A * Ub * 0.05 * rng.standard_normal(U.shape) * f[:, None]
     fields.set_internal_vector_field(case / "0/U", U)
-
-
-# ---------------------------------------------------------------- progress
-
-def progress(case):
-    """One line: stage, T*, fraction done and ETA from the solver log."""
-    case = Path(case)
-    s = read_settings(case)
-    p = preset(s["preset"])
-    t_end = float(s["endTime"])
-    now = prog.solver_progress(case / "log.aggloPimpleFoam", t_end,
-                               p["deltaT"])
-    if now is None:
-        return "starting"
-    t, frac, eta = now
-    return (f"{s['stage']}: T* = {t / p['tScale']:.2f}, stage ends at "
-            f"{t_end / p['tScale']:.2f} " + prog.line(frac, eta))
 
 
 # ------------------------------------------------------------------- main

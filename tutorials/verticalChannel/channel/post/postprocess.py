@@ -103,8 +103,13 @@ def analyse_run(p, adir, cloud):
         "nPrimariesInAgglomerates")]
     r["countersNonDecreasing"] = bool(all(np.all(np.diff(st[c]) >= 0)
                                           for c in cnt))
-    r["NpBalance"] = bool(np.all(st["nParticles"]
-                                 == st["nPrimaries"][0] - st["nAgg"]))
+    # each agglomeration makes one particle of two, each break-up two of
+    # one (the counters nBreakup<Mechanism>; NoRoom counts waits)
+    splits = sum((st[c] for c in st if c.startswith("nBreakup")
+                  and c != "nBreakupNoRoom"), np.zeros_like(st["nAgg"]))
+    r["NpBalance"] = bool(np.all(st["nParticles"] == st["nPrimaries"][0]
+                                 - st["nAgg"] + splits))
+    r["_breakupCounted"] = any(c.startswith("nBreakup") for c in st)
     r["_series"] = {"T": T[1:], "nCol": st["nCol"], "nAgg": st["nAgg"],
                     "Npp": st["nPrimariesInAgglomerates"],
                     "Np": st["nParticles"], "D10": st["D10"]}
@@ -154,7 +159,9 @@ def post(pname, reference=False):
         return 1
     out.mkdir(parents=True, exist_ok=True)
     fluid = {}
-    ut, G = u_tau(p, TUTORIAL / "runs" / pname / "unladen")
+    # the unladen LES is this preset's, or its stagesFrom preset's
+    ut, G = u_tau(p, (TUTORIAL / "runs" / (p["stagesFrom"] or pname)
+                      / "unladen"))
     if ut:
         fluid["unladen"] = {"uTauByUb": ut / p["Ubar"], "gradient": G}
     res = {}

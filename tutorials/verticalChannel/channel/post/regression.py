@@ -188,6 +188,7 @@ def regression(p, res):
               and r["countersNonDecreasing"] and r["NpBalance"])
         rows.append(R(f"{c} {m} conservation", r["massRelErr"], None, 0.0,
                      1e-10, reg.status(ok),
-                     "mass, primaries, N_p = N - N_agg, counters"
-                     " non-decreasing"))
+                     "mass, primaries, N_p = N - N_agg"
+                     + (" + N_breakup" if r.get("_breakupCounted") else "")
+                     + ", counters non-decreasing"))
     return rows
