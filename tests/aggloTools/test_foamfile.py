@@ -10,7 +10,7 @@ import re
 import numpy as np
 import pytest
 
-from aggloTools import boxcase
+from aggloTools import boxcase, foamfile
 from aggloTools.foamfile import (dict_text, entry_value, merged, number,
                                  parse_dict, read_dict, write_foamfile)
 from aggloTools.runner import foam_bin, run
@@ -139,3 +139,16 @@ def test_box_case_writes_the_dicts_it_is_given(tmp_path):
     assert sub["collisionModel"] == "none" and "hardSphereCoeffs" not in sub
     ctl = read_dict(case / "system" / "controlDict")
     assert ctl["endTime"] == 1e-3 and ctl["writeInterval"] == 10
+
+
+def test_edit_replaces_and_refuses_a_text_not_there(tmp_path):
+    f = tmp_path / "controlDict"
+    f.write_text("endTime 1; writeInterval 1; endTime 1;\n")
+    foamfile.edit(f, "endTime 1;", "endTime 2;", 1)
+    assert f.read_text() == "endTime 2; writeInterval 1; endTime 1;\n"
+    foamfile.edit(f, "1;", "3;")
+    assert f.read_text() == "endTime 2; writeInterval 3; endTime 3;\n"
+    with pytest.raises(ValueError, match="controlDict: 'endTime 1;' is "
+                       "not in the file"):
+        foamfile.edit(f, "endTime 1;", "endTime 4;")
+    assert f.read_text() == "endTime 2; writeInterval 3; endTime 3;\n"

@@ -4,7 +4,7 @@ cut-off one is set aside. The folders are written here file by file, as a
 processor folder of a 2-rank run leaves them."""
 
 from aggloTools import times
-from aggloTools.foamfile import HEADER
+from aggloTools.foamfile import HEADER, edit
 
 END = "\n\n// " + "*" * 73 + " //\n"
 
@@ -60,7 +60,7 @@ def test_write_that_began_only(tmp_path):
     _write(tmp_path, "0.004", ["EAM", "MAM"], 3)
     assert times.incomplete_time(tmp_path) is None
     rec = tmp_path / "0.004/uniform/lagrangian/MAM" / times.CLOUD_RECORD
-    rec.write_text(rec.read_text().replace("complete true", "complete false"))
+    edit(rec, "complete true", "complete false")
     assert times.incomplete_time(tmp_path) == tmp_path / "0.004"
 
 

@@ -11,6 +11,7 @@ import pytest
 
 from aggloTools import times
 from aggloTools.runner import project_dir, tutorial_module
+from aggloTools.foamfile import edit
 from runLocks import lock_text
 
 TUT = project_dir() / "tutorials" / "breakupShear"
@@ -126,7 +127,7 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
     last = times.time_dirs(case)[-1]
     (last / "U").write_bytes((last / "U").read_bytes()[:200])
     log = case / "log.aggloPimpleFoam"
-    log.write_text(log.read_text().replace("\nEnd\n", "\n"))
+    edit(log, "\nEnd\n", "\n")
     res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True, timeout=600)
@@ -157,9 +158,9 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
     largest = max(r["nMax"] for r in rows)
     assert largest > 1
     patched = tut / "breakupTheory.py"
-    patched.write_text(patched.read_text().replace(
-        "        return n\n\n    def critical_shear",
-        f"        return min(n, {largest - 1})\n\n    def critical_shear"))
+    edit(patched,
+         "        return n\n\n    def critical_shear",
+         f"        return min(n, {largest - 1})\n\n    def critical_shear")
     res = subprocess.run(["./Allrun", "-preset", "ci", "-post"], cwd=tut,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True, timeout=600)
@@ -199,11 +200,11 @@ def test_driver_help_and_refusals(tmp_path, foam_env):
         in res.stderr
     # a solver that cannot start: its controlDict names no application
     theory = tut / "breakupShear.py"
-    theory.write_text(theory.read_text().replace(
-        '    stages.run_logged([foam_bin("blockMesh")], case, '
-        '"log.blockMesh")',
-        '    stages.run_logged([foam_bin("blockMesh")], case, '
-        '"log.blockMesh")\n        (case / "system/fvSolution").unlink()'))
+    edit(theory,
+         '    stages.run_logged([foam_bin("blockMesh")], case, '
+         '"log.blockMesh")',
+         '    stages.run_logged([foam_bin("blockMesh")], case, '
+         '"log.blockMesh")\n        (case / "system/fvSolution").unlink()')
     res = subprocess.run(["./Allrun", "-preset", "ci"], cwd=tut,
                          capture_output=True, text=True, timeout=300)
     assert res.returncode == 1, res.stdout[-2000:]

@@ -11,6 +11,7 @@ import numpy as np
 from aggloTools import placement
 from aggloTools.boxcase import box_case, kernel
 from aggloTools.cloud import read_cloud
+from aggloTools.foamfile import edit
 
 STATE = ("U", "omega", "d", "rho", "nPrimary", "origId", "origProcId",
          "lastPartnerId", "lastContactTime")
@@ -126,5 +127,5 @@ def primaries_gas(case, model="EAM", log=True, decompose=(1, 1, 1),
     if log:
         f = case / "constant" / "kinematicCloudProperties"
         old = "agglomerationModel " + model + ";"
-        f.write_text(f.read_text().replace(old, old + " eventLog true;", 1))
+        edit(f, old, old + " eventLog true;", 1)
     return case

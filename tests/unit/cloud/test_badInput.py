@@ -13,7 +13,7 @@ presets and case settings in tests/tutorials/test_tutorialInput."""
 import pytest
 
 from aggloTools.boxcase import box_case, kernel, run_case
-from aggloTools.foamfile import strip_comments
+from aggloTools.foamfile import edit, strip_comments
 from cloudBoxCases import PAIR, L, assert_fatal_naming
 
 EAM = "agglomerationModel EAM;"
@@ -255,7 +255,7 @@ def test_breakup_needs_agglomeration(case_dir, foam_env):
     edited_case(case_dir, ROT, ROT + " breakupModel stressThreshold;"
                 " stressThresholdCoeffs { " + BRK + " }")
     f = case_dir / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace(EAM, "agglomerationModel none;"))
+    edit(f, EAM, "agglomerationModel none;")
     assert_fatal_naming(run_case(case_dir, check=False), "breakupModel")
 
 

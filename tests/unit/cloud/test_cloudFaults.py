@@ -16,6 +16,7 @@ from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.cloud import cloud_dir, read_cloud, read_positions
 from aggloTools.runner import foam_bin, run
 from aggloTools.stats import stats_rows as stats
+from aggloTools.foamfile import edit
 from cloudBoxCases import PAIR, L, assert_fatal_naming
 
 
@@ -101,9 +102,9 @@ def test_vtkcloud_writes_every_parcel_field(case_dir, foam_env):
     box_case(case_dir, L=(L, L, L), particles=parts, dt=1e-5, end_time=1e-4)
     # keep the last partner after the pair has separated
     f = case_dir / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace(
-        "agglomerationModel none;",
-        "agglomerationModel none; encounterRelease none;", 1))
+    edit(f,
+         "agglomerationModel none;",
+         "agglomerationModel none; encounterRelease none;", 1)
     cd = case_dir / "system" / "controlDict"
     cd.write_text(cd.read_text() + """
 functions

@@ -12,6 +12,7 @@ import pytest
 from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.stats import stats_rows as stats
 from aggloTools.times import last_time
+from aggloTools.foamfile import edit
 from cloudBoxCases import (D, L, add_hard_sphere_entries, agglomerating_gas,
                            assert_fatal_naming, cloud_state, pair_particles)
 
@@ -107,8 +108,8 @@ def test_two_clouds_share_one_flow(case_dir, foam_env):
         d = case_dir / model
         agglomerating_gas(d, 4e-3, 40)
         f = d / "constant" / "kinematicCloudProperties"
-        f.write_text(f.read_text().replace("agglomerationModel EAM;",
-                                           f"agglomerationModel {model};"))
+        edit(f, "agglomerationModel EAM;",
+             f"agglomerationModel {model};")
         run_case(d)
         single[model] = stats(d)
         assert single[model][-1]["nAgg"] > 0

@@ -10,6 +10,7 @@ import shutil
 from aggloTools import eventlog
 from aggloTools.boxcase import run_case
 from aggloTools.runner import foam_bin, run
+from aggloTools.foamfile import edit
 from cloudBoxCases import primaries_gas as gas
 
 
@@ -38,7 +39,7 @@ def test_log_off_with_later_events_refused(case_dir, foam_env):
     later = int((eventlog.read_events(c)["timeIndex"] > 30).sum())
     assert 0 < later < n
     f = c / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace("eventLog true;", "", 1))
+    edit(f, "eventLog true;", "", 1)
     res = _restart(c, "0.003", "0.004", "log.off")
     assert res.returncode != 0, res.stdout[-1500:]
     assert f"holds {later} events after time 0.003" in res.stdout

@@ -14,6 +14,7 @@ import pytest
 from aggloTools import eventlog
 from aggloTools.boxcase import run_case
 from aggloTools.runner import foam_bin, run
+from aggloTools.foamfile import edit
 from cloudBoxCases import primaries_gas as gas
 
 def _replay_cmd(c, *args):
@@ -29,7 +30,7 @@ def test_check_fails_when_outcomes_differ(case_dir, foam_env):
     run_case(c)
     assert _replay_cmd(c, "-check").returncode == 0
     f = c / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace("en 0.97;", "en 0.5;", 1))
+    edit(f, "en 0.97;", "en 0.5;", 1)
     res = _replay_cmd(c, "-check")
     assert res.returncode == 1, res.stdout[-1500:]
     assert "does not reproduce" in res.stdout
@@ -172,9 +173,9 @@ def test_variant_of_the_other_model_drops_the_run_coefficients(
     EAM's coefficients are not the MAM's: they are left out)."""
     c = gas(case_dir / "gas")
     f = c / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace(
-        "agglomerationModel EAM;",
-        "agglomerationModel EAM; EAMCoeffs { impactVelocity full; }", 1))
+    edit(f,
+         "agglomerationModel EAM;",
+         "agglomerationModel EAM; EAMCoeffs { impactVelocity full; }", 1)
     run_case(c)
     res = eventlog.replay(c, {"MAM": {"agglomerationModel": "MAM"}},
                           check=True)

@@ -19,6 +19,7 @@ from aggloTools.fields import read_patch
 from aggloTools.mesh import Mesh
 from aggloTools.times import last_time
 from aggloTools.stats import stats_rows as stats
+from aggloTools.foamfile import edit
 from cloudBoxCases import D, L, agglomerating_gas, cloud_state
 
 #: The mass of one 12 um quartz primary [kg]
@@ -182,11 +183,11 @@ def test_restart_and_three_ranks_keep_the_balance(case_dir, foam_env):
         runs[name] = c
     run_case(runs["whole"])
     ctrl = runs["split"] / "system" / "controlDict"
-    ctrl.write_text(ctrl.read_text().replace("endTime 0.008;",
-                                             "endTime 0.004;"))
+    edit(ctrl, "endTime 0.008;",
+         "endTime 0.004;")
     run_case(runs["split"])
-    ctrl.write_text(ctrl.read_text().replace("endTime 0.004;",
-                                             "endTime 0.008;"))
+    edit(ctrl, "endTime 0.004;",
+         "endTime 0.008;")
     run_case(runs["split"])
     run_case(runs["ranks"], parallel=3)
 
@@ -214,11 +215,11 @@ def test_record_that_disagrees_is_refused(case_dir, foam_env):
     named; the same restart with the record intact runs."""
     sticky_gas(case_dir, 6e-3, 20)
     ctrl = case_dir / "system" / "controlDict"
-    ctrl.write_text(ctrl.read_text().replace("endTime 0.006;",
-                                             "endTime 0.004;"))
+    edit(ctrl, "endTime 0.006;",
+         "endTime 0.004;")
     run_case(case_dir)
-    ctrl.write_text(ctrl.read_text().replace("endTime 0.004;",
-                                             "endTime 0.006;"))
+    edit(ctrl, "endTime 0.004;",
+         "endTime 0.006;")
     intact = case_dir.parent / (case_dir.name + "_intact")
     if intact.exists():
         shutil.rmtree(intact)

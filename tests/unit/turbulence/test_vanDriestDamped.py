@@ -21,6 +21,7 @@ import pytest
 from aggloTools import boxcase
 from aggloTools.fields import read_internal
 from aggloTools.runner import foam_bin, run
+from aggloTools.foamfile import edit
 
 from test_lesChannel import DT, L, N, channel_case
 
@@ -52,15 +53,15 @@ def expected_delta(case, t1, t2, nu=NU):
 def test_delta_matches_hand_computation(case_dir, foam_env, ranks, nu):
     channel_case(case_dir, n_particles=10)
     tp = case_dir / "constant/transportProperties"
-    tp.write_text(tp.read_text().replace("nu 1.5212e-5;", f"nu {nu!r};"))
+    edit(tp, "nu 1.5212e-5;", f"nu {nu!r};")
     cd = case_dir / "system/controlDict"
-    cd.write_text(cd.read_text().replace("writeInterval 30;",
-                                         "writeInterval 1;")
-                  .replace(f"endTime {30 * DT!r};", f"endTime {2 * DT!r};"))
+    edit(cd, "writeInterval 30;",
+         "writeInterval 1;")
+    edit(cd, f"endTime {30 * DT!r};", f"endTime {2 * DT!r};")
     dp = case_dir / "system/decomposeParDict"
-    dp.write_text(dp.read_text().replace("numberOfSubdomains 2;",
-                                         "numberOfSubdomains 3;")
-                  .replace("n (2 1 1);", "n (1 3 1);"))
+    edit(dp, "numberOfSubdomains 2;",
+         "numberOfSubdomains 3;")
+    edit(dp, "n (2 1 1);", "n (1 3 1);")
     boxcase.run_case(case_dir, parallel=ranks)
     t1, t2 = (f"{k * DT:g}" for k in (1, 2))
     if ranks:

@@ -20,6 +20,7 @@ import pytest
 from aggloTools import boxcase, breakuplog
 from aggloTools.runner import CommandError, foam_bin, run
 from aggloTools.stats import stats_rows
+from aggloTools.foamfile import edit
 from breakupCases import (GAMMA_CRIT, H, L_C, N_C, NU_F, RHO_F, breakup,
                           kernel, size_density, tensile_strength)
 
@@ -292,7 +293,7 @@ def test_log_replay_restart_and_corruption(case_dir, foam_env):
     later = int((ev["timeIndex"] > WRITE).sum())
     assert 0 < later < len(ev)
     f = off / "constant" / "kinematicCloudProperties"
-    f.write_text(f.read_text().replace(" eventLog true;", "", 1))
+    edit(f, " eventLog true;", "", 1)
     res = run([foam_bin("aggloPimpleFoam")], off, "log.logOff",
               check=False)
     assert res.returncode != 0, res.stdout[-1500:]

@@ -17,6 +17,7 @@ from aggloTools import boxcase
 from aggloTools.cloud import read_cloud, read_record
 from aggloTools.stats import read_stats
 from aggloTools.times import last_time
+from aggloTools.foamfile import edit
 from breakupCases import (BREAKUP, DP, GAP, RHO_P, by_id, kernel,
                           omega_crit, size_density, state, totals)
 
@@ -220,11 +221,11 @@ def test_restart_continues_the_fragment_ids(case_dir, foam_env):
     boxcase.run_case(runs["whole"])
     for name in ("restart", "corrupt"):
         ctl = runs[name] / "system/controlDict"
-        ctl.write_text(ctl.read_text().replace("endTime 3e-07",
-                                               "endTime 1e-07"))
+        edit(ctl, "endTime 3e-07",
+             "endTime 1e-07")
         boxcase.run_case(runs[name])
-        ctl.write_text(ctl.read_text().replace("endTime 1e-07",
-                                               "endTime 3e-07"))
+        edit(ctl, "endTime 1e-07",
+             "endTime 3e-07")
     assert read_record(runs["restart"], "1e-07",
                        "kinematicCloud")["nFragmentIds"] == 1
 
@@ -245,8 +246,8 @@ def test_restart_continues_the_fragment_ids(case_dir, foam_env):
 
     rec = (runs["corrupt"] / "1e-07/uniform/lagrangian/kinematicCloud"
            / "hardSphereCloudState")
-    rec.write_text(rec.read_text().replace("nFragmentIds    1;",
-                                           "nFragmentIds    0;"))
+    edit(rec, "nFragmentIds    1;",
+         "nFragmentIds    0;")
     assert "nFragmentIds    0;" in rec.read_text()
     res = run([foam_bin("aggloPimpleFoam")], runs["corrupt"], "log.corrupt",
               check=False)

@@ -17,6 +17,7 @@ from aggloTools.boxcase import box_case, kernel, run_case
 from aggloTools.cloud import read_cloud, read_mass_balance, read_positions, \
     cloud_dir
 from aggloTools.times import last_time
+from aggloTools.foamfile import edit
 
 D = 12e-6
 M1 = 2200 * math.pi / 6 * D ** 3
@@ -136,11 +137,11 @@ def test_restart_continues_exactly(case_dir, foam_env):
                                     end_time=3e-3)
     run_case(runs["whole"])
     ctrl = runs["split"] / "system" / "controlDict"
-    ctrl.write_text(ctrl.read_text().replace("endTime 0.003;",
-                                             "endTime 0.001;"))
+    edit(ctrl, "endTime 0.003;",
+         "endTime 0.001;")
     run_case(runs["split"])
-    ctrl.write_text(ctrl.read_text().replace("endTime 0.001;",
-                                             "endTime 0.003;"))
+    edit(ctrl, "endTime 0.001;",
+         "endTime 0.003;")
     run_case(runs["split"])
     for t in ("0.002", "0.003"):
         whole = sorted(p.relative_to(runs["whole"] / t)

@@ -133,6 +133,19 @@ def check_keys(d, valid, where):
                              "entries: " + " ".join(sorted(valid)))
 
 
+def edit(path, old, new, count=-1):
+    """Replace old by new in the file path (the first count occurrences;
+    all by default), as a test or a script edits a written case file; a
+    ValueError naming the file if old is not in it, so that an edit whose
+    text has moved does not pass unnoticed as an unchanged case."""
+    path = Path(path)
+    text = path.read_text()
+    if old not in text:
+        raise ValueError(f"{path}: {old!r} is not in the file: nothing to "
+                         "replace")
+    path.write_text(text.replace(old, new, count))
+
+
 def write_foamfile(path, cls, loc, obj, body):
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
