@@ -51,38 +51,40 @@ def test_fragments_spinning_as_the_parent_keep_part_of_it():
     assert dke / rot == pytest.approx(kept - 1, abs=1e-9)
 
 
-def history(na, mean, sigma_mean=0.01, T=None):
-    T = np.linspace(0, 200, len(na)) if T is None else T
-    return [{"T": t, "N_a": a, "meanSize": m, "sigmaMeanSize": sigma_mean}
-            for t, a, m in zip(T, na, mean)]
+T = np.linspace(0, 200, 201)      # the statistics of every T*
 
 
 def test_steady_sizes():
-    rows = history([400.0] * 21, [2.3] * 21)
-    s = breakup.steadiness(rows, 100, 200)
-    assert s["writes"] == 6 and (s["from"], s["to"]) == (150, 200)
+    na, npp = np.full(201, 400.0), np.full(201, 920.0)
+    s = breakup.steadiness(T, na, npp, 100, 200, spread=0.5)
+    assert s["steps"] == 51 and (s["from"], s["to"]) == (150, 200)
     assert s["steady"] and s["N_a"]["change"] == pytest.approx(0, abs=1e-9)
     assert s["N_a"]["sigma"] == pytest.approx(20.0)
+    assert s["meanSize"]["sigma"] == pytest.approx(0.5 / 20.0)
 
 
 @pytest.mark.parametrize("growth, steady", [(30.0, True), (50.0, False)])
 def test_a_drift_beyond_twice_the_poisson_error_is_not_steady(growth,
                                                                steady):
     """N_a grows linearly by `growth` over the window's second half
-    (150-200); sqrt(N_a) at its end is about 20-21: steady within 2
-    sigma up to about 41."""
-    T = np.linspace(0, 200, 21)
+    (150-200), the mean size stays 2: sqrt(N_a) at its end is about
+    20.7, so steady within 2 sigma up to about 41."""
     na = 400 + growth * (T - 150) / 50
-    s = breakup.steadiness(history(na, [2.3] * 21, T=T), 100, 200)
+    s = breakup.steadiness(T, na, 2 * na, 100, 200, spread=0.5)
     assert s["N_a"]["change"] == pytest.approx(growth, rel=1e-9)
+    assert s["meanSize"]["change"] == pytest.approx(0, abs=1e-12)
     assert s["N_a"]["steady"] is steady and s["steady"] is steady
 
 
-def test_mean_size_drift_and_too_few_writes():
-    T = np.linspace(0, 200, 21)
-    s = breakup.steadiness(history([400.0] * 21, 2 + T / 1000, T=T),
-                           100, 200)
+def test_mean_size_drift_and_too_few_steps():
+    """The mean size grows by 0.05 over the second half: against
+    2 x 0.5/sqrt(400) = 0.05 steady at the bound's edge, not with a
+    spread of 0.4; fewer than three steps with agglomerates: n/r."""
+    na = np.full(201, 400.0)
+    npp = na * (2 + T / 1000)
+    s = breakup.steadiness(T, na, npp, 100, 200, spread=0.4)
     assert s["meanSize"]["change"] == pytest.approx(0.05, rel=1e-9)
     assert not s["meanSize"]["steady"] and not s["steady"]
-    assert breakup.steadiness(history([1.0] * 3, [2.0] * 3), 100, 200) \
-        is None
+    assert breakup.steadiness(T, na, npp, 100, 200, spread=0.6)["steady"]
+    na[:199] = 0
+    assert breakup.steadiness(T, na, npp, 100, 200) is None

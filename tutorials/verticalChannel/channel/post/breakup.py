@@ -1,8 +1,8 @@
 """verticalChannel: the break-up of a preset's agglomeration stages (a
 preset with `breakup NAME;`, doc/breakup.md): what broke, by which
-mechanism and when, how near the agglomerates that held came to
-breaking, the agglomerate sizes over time and whether they settle, the
-kinetic energy of the splits, and the logged break-ups replayed through
+mechanism and when, how near the agglomerates came to breaking, the
+agglomerate sizes over time and whether they settle, the kinetic energy
+of the splits, and the logged break-ups replayed through
 variants of the model.
 
     channel.post.breakup PRESET [--reference]
@@ -19,12 +19,12 @@ break-up model):
 - the agglomerates per size at every write; the size distribution is
   called steady over the window's second half when neither N_a nor the
   mean number of primaries per agglomerate changes there by more than
-  twice its Poisson error (the drift is a least-squares line through the
-  writes, its change over that half against sqrt(N_a) and the standard
-  error of the mean size);
+  twice its error (steadiness(): a least-squares line through every
+  step's statistics, its change over that half against sqrt(N_a) and
+  the standard error of the mean size);
 - with the event log: every break-up's kinetic energy change (the
   fragments' against the parent's, translational and rotational, as the
-  driver's stats column breakupEnergyChange sums it), relative to the
+  driver's log line sums it for each step), relative to the
   parent's rotational energy (its energy in its own centre-of-mass frame);
   breakupReplay -check (each logged fragment reproduced) and the
   variants of the run's coefficients (variants()): how many of the logged
@@ -112,20 +112,25 @@ def size_history(p, adir, cloud):
     return rows
 
 
-def steadiness(rows, w0, w1):
-    """Whether N_a and the mean size settle over the window's second half
-    (the module's rule); None if fewer than three writes lie there."""
-    half = [r for r in rows if (w0 + w1) / 2 <= r["T"] <= w1 + 1e-9]
-    if len(half) < 3:
+def steadiness(T, na, npp, w0, w1, spread=None):
+    """Whether N_a and the mean size (primaries in agglomerates over N_a)
+    settle over the window's second half, from the statistics of every
+    step (T*agg, N_a, N_pp): the change of a least-squares line through
+    that half against twice the Poisson error of N_a at its end
+    (sqrt(N_a)) and twice the standard error of the mean size (spread,
+    the standard deviation of the sizes, over sqrt(N_a); the last write's
+    distribution); None if fewer than three steps lie there."""
+    T, na, npp = (np.asarray(x, float) for x in (T, na, npp))
+    half = ((w0 + w1) / 2 <= T) & (T <= w1 + 1e-9) & (na > 0)
+    if half.sum() < 3:
         return None
-    T = np.array([r["T"] for r in half])
-    out = {"from": float(T[0]), "to": float(T[-1]), "writes": len(half)}
-    for q, err in (("N_a", lambda r: math.sqrt(max(r["N_a"], 1.0))),
-                   ("meanSize", lambda r: r["sigmaMeanSize"])):
-        y = np.array([r[q] for r in half])
+    T, na, npp = T[half], na[half], npp[half]
+    out = {"from": float(T[0]), "to": float(T[-1]), "steps": int(len(T))}
+    sd = 0.0 if spread is None else float(spread)
+    for q, y, sigma in (("N_a", na, math.sqrt(na[-1])),
+                        ("meanSize", npp / na, sd / math.sqrt(na[-1]))):
         change = float(np.polyfit(T, y, 1)[0] * (T[-1] - T[0]))
-        sigma = float(err(half[-1]))
-        out[q] = {"change": change, "sigma": sigma,
+        out[q] = {"change": change, "sigma": float(sigma),
                   "steady": abs(change) <= 2 * sigma}
     out["steady"] = out["N_a"]["steady"] and out["meanSize"]["steady"]
     return out
@@ -166,7 +171,11 @@ def analyse(p, adir, cloud, model):
     r["largestRatio"] = max(ratio) if ratio else None
     r["largestRatioSteps"] = len(ratio)
     r["sizes"] = size_history(p, adir, cloud)
-    r["steady"] = steadiness(r["sizes"], w0, w1)
+    last = r["sizes"][-1] if r["sizes"] else None
+    r["steady"] = steadiness(
+        T[1:], st["nAgglomerates"], st["nPrimariesInAgglomerates"], w0, w1,
+        last["sigmaMeanSize"] * math.sqrt(last["N_a"])
+        if last and last["N_a"] else None)
     b = settings.read_settings(adir)["breakup"]
     r["events"] = events(adir, cloud, b.get(f"{model}Coeffs", {}))
     return r
@@ -228,7 +237,7 @@ def text(pname, res):
                          f"{v['sigma']:.2g} per T*")
         lr = r["largestRatio"]
         lines.append("  largest load/strength ratio of the agglomerates "
-                     "that held: " + (f"{lr:.3g} over {r['largestRatioSteps']}"
+                     "checked: " + (f"{lr:.3g} over {r['largestRatioSteps']}"
                                       " steps (a ratio of 1 breaks)"
                                       if lr is not None else "none checked"))
         if r["sizes"]:
@@ -238,8 +247,8 @@ def text(pname, res):
                          f"primaries, largest {e['maxSize']:.0f}")
         s = r["steady"]
         if s is None:
-            lines.append("  steady sizes: n/r (fewer than three writes in "
-                         "the window's second half)")
+            lines.append("  steady sizes: n/r (fewer than three steps with "
+                         "agglomerates in the window's second half)")
         else:
             lines.append(
                 f"  steady sizes over T*agg {s['from']:.0f}-{s['to']:.0f}: "
