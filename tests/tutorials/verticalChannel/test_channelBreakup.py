@@ -7,7 +7,8 @@ agglomerate of every step checked (the log's count against stats.dat's
 nAgglomerates of the step), and the largest ratio of load to
 strength far below 1 (about 4e-4: the quartz doublets' van der Waals
 bond against this flow's stresses), so nothing breaks and the primaries
-are kept; the driver's break-up report says so from the same files."""
+are kept; the driver's break-up report says so from the same files, and
+the statistics equal those of the smoke run without break-up."""
 
 import json
 import re
@@ -65,7 +66,7 @@ def test_unknown_breakup_model_refused(tmp_path):
 
 
 @pytest.mark.slow
-def test_smoke_C2_with_breakup(tmp_path, foam_env):
+def test_smoke_C2_with_breakup(tmp_path, smoke_runs):
     case = copy(tmp_path, "stressThreshold")
     res = subprocess.run(["./Allrun", "-preset", "smoke", "-configs", "C2",
                           "-np", "1", "-every", "600"], cwd=case,
@@ -111,6 +112,14 @@ def test_smoke_C2_with_breakup(tmp_path, foam_env):
         assert abs(T[i] - s["T"]) < 1e-9
         assert s["N_a"] == st["nAgglomerates"][i]
         assert sum(s["counts"].values()) == s["N_a"]
+    # Nothing broke, so the stage is the one without break-up: every
+    # column of the smoke run's C2 EAM statistics (break-up off) equal,
+    # step for step (the model's draws are keyed, none is taken)
+    off = read_stats(smoke_runs[1] / "runs" / "smoke" / "C2"
+                     / "agglomeration-EAM", "EAM")
+    assert len(off["Time"]) == len(st["Time"]) and off["nAgg"][-1] > 0
+    for col in off:
+        assert np.array_equal(off[col], st[col]), col
 
 
 @pytest.mark.slow

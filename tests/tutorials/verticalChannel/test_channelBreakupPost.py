@@ -88,3 +88,20 @@ def test_mean_size_drift_and_too_few_steps():
     assert breakup.steadiness(T, na, npp, 100, 200, spread=0.6)["steady"]
     na[:199] = 0
     assert breakup.steadiness(T, na, npp, 100, 200) is None
+
+
+def test_sizes_all_alike_are_steady_within_one_primary():
+    """One doublet throughout: no spread, the mean size's error one
+    primary over N_a (1/1): round-off in the fit is steady, a doublet
+    that becomes a triplet half-way is within twice that (the line's
+    change about 1.5), one that becomes a quintuplet is not."""
+    na = np.ones(201)
+    s = breakup.steadiness(T, na, 2 * na * (1 + 1e-16 * T), 100, 200,
+                           spread=0.0)
+    assert s["meanSize"]["sigma"] == 1.0 and s["steady"]
+    s = breakup.steadiness(T, na, np.where(T < 175, 2.0, 3.0), 100, 200,
+                           spread=0.0)
+    assert s["meanSize"]["change"] > 0.5 and s["meanSize"]["steady"]
+    s = breakup.steadiness(T, na, np.where(T < 175, 2.0, 5.0), 100, 200,
+                           spread=0.0)
+    assert not s["meanSize"]["steady"]

@@ -119,7 +119,8 @@ def steadiness(T, na, npp, w0, w1, spread=None):
     that half against twice the Poisson error of N_a at its end
     (sqrt(N_a)) and twice the standard error of the mean size (spread,
     the standard deviation of the sizes, over sqrt(N_a); the last write's
-    distribution); None if fewer than three steps lie there."""
+    distribution; at least 1/N_a); None if fewer than three steps lie
+    there."""
     T, na, npp = (np.asarray(x, float) for x in (T, na, npp))
     half = ((w0 + w1) / 2 <= T) & (T <= w1 + 1e-9) & (na > 0)
     if half.sum() < 3:
@@ -127,11 +128,14 @@ def steadiness(T, na, npp, w0, w1, spread=None):
     T, na, npp = T[half], na[half], npp[half]
     out = {"from": float(T[0]), "to": float(T[-1]), "steps": int(len(T))}
     sd = 0.0 if spread is None else float(spread)
+    # the mean size's error at least one primary more in one agglomerate
+    # (sizes all alike have no spread, yet are not known exactly)
     for q, y, sigma in (("N_a", na, math.sqrt(na[-1])),
-                        ("meanSize", npp / na, sd / math.sqrt(na[-1]))):
+                        ("meanSize", npp / na, max(sd / math.sqrt(na[-1]),
+                                                   1 / na[-1]))):
         change = float(np.polyfit(T, y, 1)[0] * (T[-1] - T[0]))
         out[q] = {"change": change, "sigma": float(sigma),
-                  "steady": abs(change) <= 2 * sigma}
+                  "steady": bool(abs(change) <= 2 * sigma)}
     out["steady"] = out["N_a"]["steady"] and out["meanSize"]["steady"]
     return out
 
