@@ -119,12 +119,20 @@ def test_pairs_derived_from_the_presets(pairs):
     check's (the grid with the particle number: regime48n3 against
     regime32) or the grid in every direction (regime48 against regime32,
     the grid trend's) is no pair; the time step in seconds, the write
-    interval and the solver tolerance do not count as shortcuts."""
+    interval and the solver tolerance do not count as shortcuts; a
+    variant at a larger step belongs to the time-step check alone."""
     assert pairs.check_pairs("particleNumber") == [
         ("regime32n3", "regime32"), ("regime48n3", "regime48")]
     assert pairs.check_pairs("phaseLength") == [
         ("regime32", "small"), ("regime64", "regime64short")]
     assert pairs.check_pairs("wallNormal") == [("printed", "regime64")]
+    # regime64dt2 is regime64 at twice the step: the time-step check's
+    # pair, and no base of the wall-normal check although printed
+    # differs from it in the wall-normal entries alone
+    assert pairs.check_pairs("timeStep") == [("regime64dt2", "regime64")]
+    channel = script("channel.case.settings")
+    p, q = channel.preset("printed"), channel.preset("regime64dt2")
+    assert pairs.shortcut(p, q) == pairs.CHECKS["wallNormal"]["entries"]
     names = ["regime32", "regime48", "regime48n3"]
     assert pairs.check_pairs("particleNumber", names) == [
         ("regime48n3", "regime48")]
@@ -134,3 +142,28 @@ def test_pairs_derived_from_the_presets(pairs):
     assert {"UTolerance", "writeStar"} <= {
         k for k in a if a[k] != b.get(k)}
     assert pairs.shortcut(a, b) == pairs.CHECKS["phaseLength"]["entries"]
+
+
+@pytest.mark.parametrize("agg, verdict", [
+    (1.0, "the matrix may run at regime64dt2's step"),
+    (1.5, "the matrix stays at regime64's step"),
+    (None, "the matrix's step: n/r")])
+def test_time_step_adoption(pairs, agg, verdict):
+    """The time-step pair's last line: adopted only where all six ratios
+    (both models' f_col x s^2, f_agg x s^2, alpha_f) lie within 2 sigma
+    of 1; one quantity 1.5 times its base's at 10 % errors (z about 3.5)
+    keeps the matrix at regime64's step; a quantity without events
+    leaves it open."""
+    def model(fagg):
+        return {"f_col_scaled": 5e4, "sigma_col_scaled": 5e3,
+                "f_agg_scaled": fagg, "sigma_agg_scaled": 0.1 * fagg
+                if fagg else None, "alpha_f": fagg / 5e4 if fagg else 0}
+    base = {"models": {m: model(500.0) for m in ("EAM", "MAM")},
+            "concentration": None}
+    var = {"models": {"EAM": model(None if agg is None else 500.0 * agg),
+                      "MAM": model(500.0)}, "concentration": None}
+    res = {"variants": [{"name": "regime64", "result": base},
+                        {"name": "regime64dt2", "result": var}]}
+    rows = pairs.compare(res, ("EAM", "MAM"), "timeStep")
+    text = pairs.lines(rows, ("EAM", "MAM"), "timeStep")
+    assert text[-1].startswith("  regime64dt2 over regime64: " + verdict)

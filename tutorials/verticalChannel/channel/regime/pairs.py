@@ -1,5 +1,5 @@
 """verticalChannel regime study: the variants one shortcut apart,
-compared. Three checks (CHECKS), each over the pairs (variant, base) whose
+compared. Four checks (CHECKS), each over the pairs (variant, base) whose
 presets differ in that shortcut alone (check_pairs: derived from the
 presets, not listed):
 
@@ -17,6 +17,9 @@ presets, not listed):
   cells across with the first cell centre at y+ 0.63, Delta t* 0.005)
   over `regime64` (64 cells, first cell centre at y+ 1), the same x and
   z cells, phases and particles.
+* the time step: `regime64dt2` (Delta t* 0.02) over `regime64` (0.01),
+  everything else the same: the matrix's shortcut (the fluid is most of
+  a 64^3 step), adopted only where every quantity is consistent.
 
 Per model and quantity (f_col x s^2, f_agg x s^2, alpha_f): the ratio
 variant / base, its standard error from both runs' sigmas (relative
@@ -28,7 +31,7 @@ agglomeration of both runs (no sigma: the two values)."""
 
 from channel.regime import trend
 from aggloTools import uncertainty
-from channel.regime.variants import presets, shortcut
+from channel.regime.variants import larger_step, presets, shortcut
 
 #: The checks: the preset entries each changes alone (its pairs are the
 #: variants whose presets differ in those alone and are `alike` otherwise,
@@ -65,6 +68,14 @@ CHECKS = {
                 "does not matter where the ratio is 1 within {z:g} "
                 "sigma):",
         "differs": "depends on the wall-normal grid"},
+    "timeStep": {
+        "entries": {"dtStar"},
+        "order": lambda p: p["dtStar"],
+        "head": "Time step (regime64dt2's dt* 0.02 over regime64's 0.01, "
+                "the same grid, phases and particles; the matrix may run "
+                "at the larger step where every quantity's ratio is 1 "
+                "within {z:g} sigma):",
+        "differs": "depends on the step"},
 }
 #: The quantities compared, each with its sigma (key or function)
 NAMES = {"f_col_scaled": "f_col x s^2", "f_agg_scaled": "f_agg x s^2",
@@ -108,8 +119,12 @@ def check_pairs(check, names=None):
     p = presets(names)
     names = list(p)
     alike = c.get("alike", lambda a, b: True)
+    # a variant at a larger step belongs to the time-step check alone
+    other = {n for n in names if check != "timeStep"
+             and larger_step(n, presets())}
     return [(v, b) for v in names for b in names
             if v != b and shortcut(p[v], p[b]) == c["entries"]
+            and not {v, b} & other
             and alike(p[v], p[b]) and c["order"](p[v]) > c["order"](p[b])]
 
 
@@ -163,4 +178,19 @@ def lines(pairs, models, check):
         cv, cb = p["nearWallOverCentre"]
         out.append(f"{head}: c_w/c_0 at the start of agglomeration "
                    f"{_g(cv)} / {_g(cb)}")
+        if check == "timeStep":
+            out.append(f"{head}: " + adoption(p, models))
     return out
+
+
+def adoption(p, models):
+    """Whether the Table D.6 matrix may run at the variant's step: every
+    quantity of both models resolved and consistent with the base."""
+    r = [p[m][q] for m in models for q in NAMES]
+    if any(x is None for x in r):
+        return "the matrix's step: n/r (a quantity without events)"
+    if all(x["consistent"] for x in r):
+        return (f"the matrix may run at {p['variant']}'s step (every "
+                f"quantity within {Z_CONSISTENT:g} sigma)")
+    return (f"the matrix stays at {p['base']}'s step (not every quantity "
+            f"within {Z_CONSISTENT:g} sigma)")

@@ -18,7 +18,7 @@ extrapolation says so."""
 
 from aggloTools import uncertainty
 
-from channel.regime.variants import presets, shortcut
+from channel.regime.variants import larger_step, presets, shortcut
 
 #: What a grid variant changes from the coarsest (regime32, the paper's
 #: phases): the cells in every direction, their wall grading and the step
@@ -29,10 +29,11 @@ def grid_variants(base="regime32"):
     """The grid variants at the paper's phases and their cells per
     direction: base and every variant of the study whose preset differs
     from base's in GRID_ENTRIES alone with the same cells in every
-    direction (channelRegimeVariants), by cells."""
+    direction (channelRegimeVariants), by cells; not the time-step
+    check's variant (variants.larger_step)."""
     p = presets()
     out = [(name, s["n"][0]) for name, s in p.items()
-           if len(set(s["n"])) == 1
+           if len(set(s["n"])) == 1 and not larger_step(name, p)
            and (name == base or shortcut(s, p[base]) == GRID_ENTRIES)]
     return tuple(sorted(out, key=lambda v: v[1]))
 

@@ -1,6 +1,6 @@
 """verticalChannel regime study: its variants, in order (a preset each),
-with what each changes from `small`, and the entries in which two of them
-differ (shortcut); channelRegime runs and posts them, channelRegimePairs
+with what each changes from `small`, the entries in which two of them
+differ (shortcut) and which is another at a larger step (larger_step); channelRegime runs and posts them, channelRegimePairs
 and channelRegimeTrend derive from their presets which pairs are one
 shortcut apart and which variants refine the grid alone."""
 
@@ -18,6 +18,8 @@ VARIANTS = (
     ("regime48n3", "3e5 particles at 48^3 and the paper's phases"),
     ("printed", "regime64 at the wall-normal grid the paper prints "
                 "(64 x 128 x 64, y+ 0.63, dt* 0.005)"),
+    ("regime64dt2", "regime64 at twice its step (dt* 0.02): the cheaper "
+                    "matrix if C1 is the same"),
 )
 
 #: Entries in which two presets may differ without being another
@@ -39,3 +41,13 @@ def presets(names=None):
     """The settings of the presets names (default: every variant's)."""
     return {n: settings.preset(n)
             for n in names or [n for n, _ in VARIANTS]}
+
+
+def larger_step(name, p):
+    """True if the preset name (settings p: name -> settings) is another
+    of them at a larger step and nothing else changed: the time-step
+    check's variant, which neither refines the grid (the grid trend) nor
+    is a base of the wall-normal check."""
+    return any(shortcut(p[name], q) == {"dtStar"}
+               and p[name]["dtStar"] > q["dtStar"]
+               for other, q in p.items() if other != name)
