@@ -1,6 +1,7 @@
 """verticalChannel: the pictures of the break-up report (channel.post.breakup
 writes them): breakupHistory.png (the break-ups per mechanism, the
-agglomerates N_a and the agglomerations over T*agg, with the window) and
+agglomerates N_a and the agglomerations, and each step's largest
+load/strength ratio over T*agg, with the window) and
 breakupSizes.png (the agglomerates per size at four times of the stage)."""
 
 import numpy as np
@@ -13,27 +14,34 @@ def plots(out, p, res):
 
     w0, w1 = p["window"]
     keys = sorted(res)
-    fig, ax = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
     for i, k in enumerate(keys):
-        r = res[k]
-        T = np.asarray(r["T"])
+        r = res[k]["_series"]
+        T = r["T"]
         label = f"{k[0]} {k[1]}"
-        for j, (mech, v) in enumerate(r["mechanisms"].items()):
+        for j, mech in enumerate(res[k]["mechanisms"]):
             if mech == "NoRoom":
                 continue
-            ax[0].plot(T, v["series"], color=f"C{i}",
+            ax[0].plot(T, r["nBreakup" + mech], color=f"C{i}",
                        ls=("-", "--", ":", "-.")[j % 4],
                        label=f"{label}: {mech}")
         ax[1].plot(T, r["nAgglomerates"], color=f"C{i}",
                    label=f"{label}: agglomerates $N_a$")
         ax[1].plot(T, r["nAgg"], color=f"C{i}", ls="--",
                    label=f"{label}: agglomerations $N_{{agg}}$")
+        tr, ratio = r["ratio"]
+        if len(ratio):
+            ax[2].semilogy(tr, ratio, ".", ms=2, color=f"C{i}",
+                           label=label)
     for a in ax:
         a.axvspan(w0, w1, color="0.9", zorder=0)
         a.set_xlabel("$T^*_{agg}$ [-]")
-        a.legend(fontsize=7)
+        if a.get_legend_handles_labels()[0]:
+            a.legend(fontsize=7)
     ax[0].set_ylabel("break-ups since the stage's start [-]")
     ax[1].set_ylabel("count [-]")
+    ax[2].axhline(1.0, color="k", lw=0.8)
+    ax[2].set_ylabel("largest load/strength of the step [-] (1 breaks)")
     fig.suptitle(f"verticalChannel {p['name']}: break-up over the "
                  "agglomeration stage (grey: Eq. 87 window)")
     fig.tight_layout()

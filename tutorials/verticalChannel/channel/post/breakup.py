@@ -41,6 +41,7 @@ from aggloTools import breakuplog, uncertainty
 from aggloTools.runner import CommandError
 from aggloTools.stats import read_stats, read_table
 
+from channel import TUTORIAL
 from channel.case import settings
 from channel.plots.breakup import plots
 from channel.post import postprocess
@@ -156,24 +157,33 @@ def analyse(p, adir, cloud, model):
     t0 = settings.end_time(p, "dispersion")
     T = np.concatenate(([0.0], (st["Time"] - t0) / p["tScale"]))
     w0, w1 = p["window"]
-    r = {"case": str(adir), "cloud": cloud, "model": model,
-         "mechanisms": {}, "T": T[1:].tolist()}
+    # the case relative to the tutorial where it lies in it
+    try:
+        case = str(adir.relative_to(TUTORIAL))
+    except ValueError:
+        case = str(adir)
+    r = {"case": case, "cloud": cloud, "model": model, "mechanisms": {},
+         # every step's series, for the pictures (not in breakup.json)
+         "_series": {"T": T[1:], "nAgglomerates": st["nAgglomerates"],
+                     "nAgg": st["nAgg"]}}
     for col in sorted(c for c in st if c.startswith("nBreakup")):
         n = np.concatenate(([0.0], st[col]))
         f, sb, sp, dn = uncertainty.window_rate(T, n, w0, w1)
         r["mechanisms"][col[len("nBreakup"):]] = {
             "stage": float(n[-1]), "window": dn, "rate": f,
-            "sigma": max(sb, sp), "series": st[col].tolist()}
-    r["nAgglomerates"] = st["nAgglomerates"].tolist()
-    r["nAgg"] = st["nAgg"].tolist()
+            "sigma": max(sb, sp)}
+        r["_series"][col] = st[col]
     log = (adir / "log.aggloPimpleFoam").read_text(errors="replace")
     # the driver's kinetic energy change of each step's splits
     r["energyChangeLog"] = float(sum(postprocess.step_values(
         log, r"kinetic energy change ([-0-9.eE+]+) J")))
-    ratio = postprocess.step_values(log, r"agglomerates checked, largest "
-                                    r"\w+ ([-0-9.eE+]+)")
+    tr = postprocess.step_values(log, r"agglomerates checked, largest "
+                                 r"\w+ ([-0-9.eE+]+)", times=True)
+    ratio = [v for _, v in tr]
     r["largestRatio"] = max(ratio) if ratio else None
     r["largestRatioSteps"] = len(ratio)
+    r["_series"]["ratio"] = (np.array([(t - t0) / p["tScale"]
+                                       for t, _ in tr]), np.array(ratio))
     r["sizes"] = size_history(p, adir, cloud)
     last = r["sizes"][-1] if r["sizes"] else None
     r["steady"] = steadiness(
@@ -292,8 +302,8 @@ def post(pname, reference=False):
     out.mkdir(parents=True, exist_ok=True)
     res = {k: analyse(p, *v) for k, v in runs.items()}
     (out / "breakup.json").write_text(json.dumps(
-        {f"{c} {m}": r for (c, m), r in sorted(res.items())}, indent=1)
-        + "\n")
+        {f"{c} {m}": {k: v for k, v in r.items() if not k.startswith("_")}
+         for (c, m), r in sorted(res.items())}, indent=1) + "\n")
     t = text(pname, res)
     (out / "breakup.txt").write_text(t)
     print(t, end="")

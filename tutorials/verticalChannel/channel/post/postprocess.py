@@ -116,11 +116,11 @@ def analyse_run(p, adir, cloud):
     return r
 
 
-def step_values(log, pattern):
+def step_values(log, pattern, times=False):
     """The values of a pattern in a solver log, every match of every time
     step in order; a run resumed with -append repeats the steps after its
     last write, and those repeated steps replace the killed run's (later
-    wins)."""
+    wins). times: (time, value) pairs instead."""
     steps = []          # (time, [values])
     for line in log.splitlines():
         if line.startswith("Time = "):
@@ -132,7 +132,7 @@ def step_values(log, pattern):
             m = re.search(pattern, line)
             if m:
                 steps[-1][1].append(float(m.group(1)))
-    return [v for _, vals in steps for v in vals]
+    return [(t, v) if times else v for t, vals in steps for v in vals]
 
 
 def u_tau(p, case):
