@@ -4,7 +4,8 @@
 and the shared stages exact: the smoke preset's C2 branched from the
 smoke run's own dispersion, with only EAM, gives that run's EAM
 agglomeration statistics byte for byte, writes no unladen, release or
-dispersion of its own and no MAM run."""
+dispersion of its own and no MAM run; with break-up (nothing breaks at
+smoke) the break-up report finds the base's run without it equal."""
 
 import shutil
 import subprocess
@@ -128,6 +129,45 @@ def test_shared_stages_give_the_own_run(tmp_path, smoke_runs):
     # the unladen LES of the report is the base preset's
     text = (mine / "report" / "regression.txt").read_text()
     assert "fluid unladen: u_tau/U_B" in text
+
+    # The same with break-up (nothing breaks at smoke): the break-up
+    # report finds the base preset's run without it and says they agree
+    # (the columns both have, at every step); the counters of the run
+    # without it are the reference, not this run's own stages
+    text = (case / "presets").read_text()
+    text += ("\nsmokeBreakup\n{\n" + entry_text(text, "smokeShared")
+             + "\nbreakup stressThreshold;\n}\n")
+    (case / "presets").write_text(text)
+    shutil.copytree(own / "C2" / "agglomeration-EAM",
+                    case / "runs" / "smoke" / "C2" / "agglomeration-EAM")
+    res = subprocess.run(["./Allrun", "-preset", "smokeBreakup", "-configs",
+                          "C2", "-np", "1", "-every", "600"], cwd=case,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, timeout=900)
+    assert res.returncode == 0, res.stdout[-3000:]
+    rep = (case / "runs" / "smokeBreakup" / "report"
+           / "breakup.txt").read_text()
+    assert "  the same stage without break-up (runs/smoke/C2/agglomeration-"\
+        "EAM): every statistics column equal at every step" in rep, rep
+    # and a base run that differs is said to: its nAgg one higher from
+    # the tenth step on
+    st = sorted((case / "runs" / "smoke" / "C2" / "agglomeration-EAM"
+                 / "postProcessing" / "EAMHardSphere").glob("*/stats.dat"))
+    lines = st[0].read_text().splitlines()
+    head = next(x for x in lines if x.startswith("# Time")).split()[1:]
+    k, rows = head.index("nAgg"), [x for x in lines if x[:1] != "#"]
+    for i in range(9, len(rows)):
+        v = rows[i].split()
+        v[k] = str(int(v[k]) + 1)
+        rows[i] = " ".join(v)
+    st[0].write_text("\n".join([x for x in lines if x[:1] == "#"] + rows)
+                     + "\n")
+    res = subprocess.run([sys.executable, "-m", "channel.post.breakup",
+                          "smokeBreakup"], cwd=case, capture_output=True,
+                         text=True)
+    assert res.returncode == 0, res.stderr
+    # the tenth step ends at T*agg = 10 x 0.02
+    assert "EAM): differs from T*agg 0.2\n" in res.stdout, res.stdout
 
 
 def test_the_driver_refuses_an_unfinished_base(tmp_path, foam_env):

@@ -222,6 +222,35 @@ def events(adir, cloud, coeffs):
     return out
 
 
+def without_breakup(p, r):
+    """The same agglomeration stage without break-up, where the preset
+    shares its earlier stages (stagesFrom) and that preset has run it:
+    {"case", "equal": whether every statistics column both have is equal
+    at every step, "firstDifference": T*agg of the first step that
+    differs (or the shorter run's last)}; None otherwise. A run in which nothing breaks must equal
+    it (the break-up model draws nothing)."""
+    base = p.get("stagesFrom")
+    if not base:
+        return None
+    adir = TUTORIAL / r["case"]
+    other = TUTORIAL / "runs" / base / adir.parent.name / adir.name
+    if not (other / "done.agglomeration").is_file():
+        return None
+    st, ot = read_stats(adir, r["cloud"]), read_stats(other, r["cloud"])
+    n = min(len(st["Time"]), len(ot["Time"]))
+    same = np.ones(n, bool)
+    for col in set(st) & set(ot):
+        same &= st[col][:n] == ot[col][:n]
+    if not same.all():
+        first = float(r["_series"]["T"][int(np.argmin(same))])
+    elif len(st["Time"]) != len(ot["Time"]):
+        first = float(r["_series"]["T"][n - 1])    # one run is longer
+    else:
+        first = None
+    return {"case": str(other.relative_to(TUTORIAL)),
+            "equal": first is None, "firstDifference": first}
+
+
 def replay_lines(rep):
     """The replay's lines of the report."""
     if not isinstance(rep, dict):
@@ -270,6 +299,12 @@ def text(pname, res):
                 f"{s['N_a']['change']:.3g} +- {s['N_a']['sigma']:.2g}, the "
                 f"mean size by {s['meanSize']['change']:.3g} +- "
                 f"{s['meanSize']['sigma']:.2g}; steady within 2 sigma)")
+        wo = r.get("withoutBreakup")
+        if wo:
+            lines.append(f"  the same stage without break-up ({wo['case']}):"
+                         + (" every statistics column equal at every step"
+                            if wo["equal"] else " differs from T*agg "
+                            f"{wo['firstDifference']:.4g}"))
         ev = r["events"]
         if ev is None:
             lines.append("  event log: off")
@@ -301,6 +336,8 @@ def post(pname, reference=False):
     out = settings.report_dir(pname, reference)
     out.mkdir(parents=True, exist_ok=True)
     res = {k: analyse(p, *v) for k, v in runs.items()}
+    for r in res.values():
+        r["withoutBreakup"] = without_breakup(p, r)
     (out / "breakup.json").write_text(json.dumps(
         {f"{c} {m}": {k: v for k, v in r.items() if not k.startswith("_")}
          for (c, m), r in sorted(res.items())}, indent=1) + "\n")
