@@ -227,8 +227,8 @@ def without_breakup(p, r):
     shares its earlier stages (stagesFrom) and that preset has run it:
     {"case", "equal": whether every statistics column both have is equal
     at every step, "firstDifference": T*agg of the first step that
-    differs (or the shorter run's last)}; None otherwise. A run in which nothing breaks must equal
-    it (the break-up model draws nothing)."""
+    differs (or the shorter run's last)}; None otherwise. A run in which
+    nothing breaks must equal it (the break-up model draws nothing)."""
     base = p.get("stagesFrom")
     if not base:
         return None
