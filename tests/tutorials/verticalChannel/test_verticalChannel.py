@@ -15,7 +15,7 @@ Checks against independent expectations:
   the release), C2 counters within their Poisson noise (random SGS
   velocities).
 The smoke runs' reports, pictures and the regime study's post-processing
-of them: test_channelSmokeOutputs.py."""
+of them: post/test_channelSmokeOutputs.py."""
 
 import json
 import math

@@ -1,7 +1,7 @@
 """channel.regime.study's runner (the regime study's variants, one Allrun
 each), channel.regime.analysis's concentration and rates between writes and
 the progress of an unfinished variant; the study's post-processing is
-tested on the smoke runs in test_channelSmokeOutputs.py."""
+tested on the smoke runs in post/test_channelSmokeOutputs.py."""
 
 import threading
 
