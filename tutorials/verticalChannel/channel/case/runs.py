@@ -28,7 +28,9 @@ Stages, each a run of aggloPimpleFoam under runs/<preset>/:
                             clouds EAM and MAM in one run (one-way
                             coupled: both see the same LES), or
   <config>/agglomeration-EAM/, -MAM/   one run per model (two-way)
-A stage that is interrupted continues from its last written time when
+A preset with `stagesFrom NAME` (presets) runs its agglomeration stages
+only, branched from runs/NAME/<config>/dispersion once NAME has finished
+it. A stage that is interrupted continues from its last written time when
 Allrun is called again; finished stages are kept (remove runs/<preset>
 to redo). Then channel.post writes the report runs/<preset>/report/:
 summary.json, regression.txt (printed), plots, a pyvista picture and
