@@ -30,7 +30,6 @@ break-up model):
   variants of the run's coefficients (variants()): how many of the logged
   break-ups each keeps."""
 
-import argparse
 import json
 import math
 import sys
@@ -352,19 +351,11 @@ def post(pname, reference=False):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(
-        prog="channel.post.breakup", description=__doc__.split("\n\n")[0],
-        formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("preset", help="the preset whose runs are reported")
-    ap.add_argument("--reference", action="store_true",
-                    help="write into the committed results/PRESET")
-    a = ap.parse_args(argv)
-    try:
-        settings.preset(a.preset)
-    except SystemExit as e:
-        sys.stderr.write(f"{e}\n")
-        return 1
-    return post(a.preset, a.reference)
+    return postprocess.command(
+        argv, "channel.post.breakup", __doc__,
+        lambda a: post(a.preset, a.reference),
+        "the preset whose runs are reported",
+        "write into the committed results/PRESET")
 
 
 if __name__ == "__main__":

@@ -202,20 +202,30 @@ def post(pname, reference=False):
     return 1 if nf else 0
 
 
-def main(argv):
+def command(argv, prog, doc, run, preset_help, reference_help,
+            runs_help=None):
+    """The command line of a report of a preset (channel.post and its
+    siblings): PRESET [RUNS] [--reference], the preset checked before
+    run(args) makes the report (an unknown preset: its message, exit 1)."""
     ap = argparse.ArgumentParser(
-        prog="channel.post", description=__doc__.split("\n\n")[0],
+        prog=prog, description=doc.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("preset", help="the preset whose runs/PRESET is "
-                    "post-processed")
-    ap.add_argument("--reference", action="store_true",
-                    help="write the committed reference results/PRESET "
-                    "instead of runs/PRESET/report")
+    ap.add_argument("preset", help=preset_help)
+    if runs_help:
+        ap.add_argument("runs", nargs="?", help=runs_help)
+    ap.add_argument("--reference", action="store_true", help=reference_help)
     a = ap.parse_args(argv)
     try:
         settings.preset(a.preset)
     except SystemExit as e:
         sys.stderr.write(f"{e}\n")
         return 1
-    return post(a.preset, a.reference)
+    return run(a)
 
+
+def main(argv):
+    return command(argv, "channel.post", __doc__,
+                   lambda a: post(a.preset, a.reference),
+                   "the preset whose runs/PRESET is post-processed",
+                   "write the committed reference results/PRESET instead "
+                   "of runs/PRESET/report")

@@ -15,7 +15,6 @@ partner as it did in the run, only the outcome is computed anew; what a
 changed outcome would do to later collisions, to the agglomerates and
 (two-way coupled) to the flow is not included."""
 
-import argparse
 import json
 import sys
 from pathlib import Path
@@ -68,22 +67,15 @@ def replay(pname, runs_dir=None, reference=False):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(
-        prog="channel.post.replay", description=__doc__.split("\n\n")[0],
-        formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("preset", help="the preset whose runs are replayed")
-    ap.add_argument("runs", nargs="?", help="the folder holding the "
-                    "preset's runs (default: runs/PRESET)")
-    ap.add_argument("--reference", action="store_true",
-                    help="write into the committed results/PRESET")
-    a = ap.parse_args(argv)
-    try:
-        settings.preset(a.preset)
-    except SystemExit as e:
-        sys.stderr.write(f"{e}\n")
-        return 1
-    replay(a.preset, a.runs, a.reference)
-    return 0
+    def run(a):
+        replay(a.preset, a.runs, a.reference)
+        return 0
+    return postprocess.command(
+        argv, "channel.post.replay", __doc__, run,
+        "the preset whose runs are replayed",
+        "write into the committed results/PRESET",
+        runs_help="the folder holding the preset's runs (default: "
+        "runs/PRESET)")
 
 
 if __name__ == "__main__":
