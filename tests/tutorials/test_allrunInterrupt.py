@@ -1,6 +1,8 @@
 """A tutorial's Allrun stopped by Ctrl-C stops everything it started (the
 solvers run in the background, where a non-interactive shell ignores
-SIGINT) and writes no result; a run folder whose set-up was cut off (the
+SIGINT), its solvers after writing the step they reached (they run in
+sessions of their own and get SIGUSR2, their stopAtWriteNowSignal), and
+writes no result; a run folder whose set-up was cut off (the
 mesh there, the initial particles not) is set up again instead of run
 with no particles. The shear study's `ci` preset in a copy of the
 tutorial, one variant; each call is stopped within a minute."""
@@ -14,10 +16,25 @@ import time
 import pytest
 
 from aggloTools.runner import project_dir
+from aggloTools.times import time_dirs
 
 TUT = project_dir() / "tutorials" / "shearFlowValidation"
 
 STUDY = "matrix { impactVelocity (normal); fluidTorque (on); }\n"
+
+
+def _inside(folder):
+    """The processes whose working folder lies in folder."""
+    out = []
+    for p in os.listdir("/proc"):
+        if p.isdigit():
+            try:
+                cwd = os.readlink(f"/proc/{p}/cwd")
+            except OSError:
+                continue
+            if cwd == str(folder) or cwd.startswith(f"{folder}/"):
+                out.append(int(p))
+    return out
 
 
 def _running(pgid):
@@ -83,9 +100,17 @@ def test_ctrl_c_stops_the_study(tut, foam_env):
     while _running(proc.pid) and time.time() - t1 < 30:
         time.sleep(0.5)
     assert _running(proc.pid) == [], out[-2000:]
+    assert _inside(tut) == [], out[-2000:]
     assert proc.returncode == 130, out[-2000:]
     assert "interrupted" in out
     assert not (tut / "results").exists(), out[-2000:]
+    # the solver wrote the step it stopped at: its last time is written
+    log = logs[0].read_text()
+    assert "sigStopAtWriteNow : setting up write and stop" in log, log[-2000:]
+    last = log.rsplit("\nTime = ", 1)[1].split()[0]
+    assert float(last) == pytest.approx(
+        float(time_dirs(logs[0].parent)[-1].name), rel=1e-9)
+    assert log.rstrip().endswith("End")
 
 
 def test_uninitialised_run_is_set_up_again(tut, foam_env):

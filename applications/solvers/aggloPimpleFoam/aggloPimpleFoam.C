@@ -64,6 +64,11 @@ Description
     One solver at a time in a case: a second aggloPimpleFoam started in a
     case where one runs stops with a fatal error naming it (caseLock.H).
 
+    Write now and stop: with -opt-switch stopAtWriteNowSignal=12 (as the
+    tutorials' drivers start it), kill -USR2 to the solver (or to mpirun,
+    which passes it on) writes the run and stops it within the clouds'
+    stopInterval() steps, where it continues exactly (writeNowStep.H).
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -75,6 +80,7 @@ Description
 #include "timeNamePrecision.H"
 #include "caseLock.H"
 #include "purgeWriteQueue.H"
+#include "writeNowStep.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -103,6 +109,14 @@ int main(int argc, char *argv[])
 
     turbulence->validate();
 
+    // Write now and stop after a step where the run continues exactly
+    labelList stopIntervals(clouds.size());
+    forAll(clouds, i)
+    {
+        stopIntervals[i] = clouds[i].stopInterval();
+    }
+    writeNowStep writeNow(runTime, stopIntervals);
+
     if (!frozenFlow)
     {
         #include "CourantNo.H"
@@ -123,6 +137,7 @@ int main(int argc, char *argv[])
             #include "setDeltaT.H"
         }
 
+        writeNow.beforeStep();
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;

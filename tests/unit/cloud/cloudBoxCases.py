@@ -66,10 +66,11 @@ def gas_kernel(en):
 
 
 def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1),
-                      hard_sphere=None):
+                      hard_sphere=None, cloud=None):
     """300 quartz primaries at about 2 mm/s in a box periodic in x and z,
     walls in y: collisions, agglomerates (under EAM and MAM: seed 13) and
-    wall impacts within 40 steps."""
+    wall impacts within 40 steps; cloud: changes to the cloud's
+    properties (boxcase.cloud_properties)."""
     rng = np.random.default_rng(13)
     Lb, N = 2e-4, 300
     xs = placement.place(N, 1.2 * D, (0, 0.6 * D, 0), (Lb, Lb - 0.6 * D, Lb),
@@ -81,7 +82,7 @@ def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1),
              kinds=("cyclic", "wall", "cyclic"), particles=parts, dt=1e-4,
              end_time=end_time, write_interval=write_interval,
              hard_sphere=hard_sphere or kernel("EAM"),
-             decompose=decompose)
+             decompose=decompose, cloud=cloud)
 
 
 def add_hard_sphere_entries(case_dir, entries):

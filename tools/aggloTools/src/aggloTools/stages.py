@@ -1,8 +1,11 @@
-"""Running a tutorial's cases from its Python driver: a command run with
-its log, a solver run with progress lines (ETA from the wall clock), a
-run continued from its last complete write, several runs at a time, the
-driver's options checked before anything runs, and Ctrl-C or SIGTERM
-stopping every process started (exit status 130, nothing after it runs).
+"""Running a tutorial's cases from its Python driver: the driver's
+options checked before anything runs, the cases (new, branched from
+another's latest time, decomposed), several runs at a time, one driver
+per run folder; and, from aggloTools.processes, a command run with its
+log, a solver run with progress lines (ETA from the wall clock), and
+Ctrl-C or SIGTERM stopping every process started (exit status 130,
+nothing after it runs), the solvers after writing the step they reached.
+A run continues from its last complete write when called again.
 
     parser = stages.Parser("shearFlowValidation", __doc__)
     parser.add_argument("-j", type=stages.positive("-j"), default=2)
@@ -15,20 +18,14 @@ import contextlib
 import os
 import re
 import shutil
-import signal
-import subprocess
 import sys
-import threading
-import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from . import runlock, times
+from .processes import (  # noqa: F401 (the drivers' names for them)
+    WRITE_AND_STOP, interruptible, run_logged, run_solver)
 from .runner import CommandError
-
-_children = set()
-_lock = threading.Lock()
-
 
 # ------------------------------------------------------------------ options
 
@@ -152,40 +149,6 @@ def decomposed(case):
     return (Path(case) / DECOMPOSED).is_file()
 
 
-# --------------------------------------------------------------- processes
-
-@contextlib.contextmanager
-def _started(cmd, cwd, log, append):
-    """cmd started in cwd with its output in cwd/log (appended with
-    append) and no input, known to the interrupt handler while it runs."""
-    cwd = Path(cwd)
-    with open(cwd / log, "a" if append else "w") as out:
-        proc = subprocess.Popen([str(c) for c in cmd], cwd=cwd, stdout=out,
-                                stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL,
-                                env=dict(os.environ, PWD=str(cwd)))
-        with _lock:
-            _children.add(proc)
-        runlock.register(proc.pid)
-        try:
-            yield proc
-        finally:
-            with _lock:
-                _children.discard(proc)
-
-
-def run_logged(cmd, cwd, log, append=False):
-    """Run cmd in cwd with its output in cwd/log (appended with append),
-    as OpenFOAM's runApplication does; CommandError if it fails."""
-    cwd = Path(cwd)
-    print(f"Running {cmd[0]} on {cwd}", flush=True)
-    with _started(cmd, cwd, log, append) as proc:
-        rc = proc.wait()
-    if rc != 0:
-        raise CommandError(f"{Path(str(cmd[0])).name} failed (rc {rc}), "
-                           f"see {cwd / log}")
-
-
 def decompose(case, log="log.decomposePar"):
     """decomposePar of the case's latest time, the one its run starts
     from, named (-latestTime): plain decomposePar takes the time OpenFOAM
@@ -208,38 +171,6 @@ def decompose(case, log="log.decomposePar"):
     (Path(case) / DECOMPOSED).write_text(f"{len(procs)}\n")
 
 
-def run_solver(case, cmd, label, progress, every, append=False,
-               log="log.aggloPimpleFoam"):
-    """Run the solver command in case with a progress line every `every`
-    seconds ('    <label>: <progress(case)>'); the log appended with
-    append (a continued run); CommandError unless the solver ends with
-    End among the last 20 lines of the log.
-    Returns the wall time in seconds."""
-    case = Path(case)
-    t0 = time.time()
-    app = Path(str(cmd[0])).name
-    if app == "mpirun":             # mpirun -n N [options] app -parallel
-        args = [str(c) for c in cmd]
-        n = args[args.index("-np" if "-np" in args else "-n") + 1]
-        app = f"{Path(args[args.index('-parallel') - 1]).name} ({n} processes)"
-    print(f"Running {app} on {case}", flush=True)
-    with _started(cmd, case, log, append) as proc:
-        last = t0
-        while proc.poll() is None:
-            time.sleep(0.5)
-            if time.time() - last >= every:
-                last = time.time()
-                print(f"    {label}: {progress(case)}", flush=True)
-    if proc.returncode != 0:
-        raise CommandError(f"{label}: {Path(str(cmd[0])).name} failed, "
-                           f"see {case / log}")
-    tail = (case / log).read_text(errors="replace").splitlines()[-20:]
-    if "End" not in tail:
-        raise CommandError(f"{label}: {Path(str(cmd[0])).name} did not "
-                           f"finish, see {case / log}")
-    return time.time() - t0
-
-
 def pool(items, work, jobs):
     """work(item) for every item, up to jobs at a time, each printing its
     own lines; returns the items whose work raised (its message printed
@@ -257,52 +188,6 @@ def pool(items, work, jobs):
         for f in [ex.submit(one, i) for i in items]:
             f.result()
     return failed
-
-
-# ------------------------------------------------------------- interrupts
-
-def _stop_tree(pid):
-    """SIGTERM to pid, then to its children, however deep (each process
-    before its children, so that nothing starts anew meanwhile)."""
-    try:
-        kids = []
-        for task in Path(f"/proc/{pid}/task").iterdir():
-            kids += (task / "children").read_text().split()
-    except OSError:
-        kids = []
-    try:
-        os.kill(pid, signal.SIGTERM)
-    except ProcessLookupError:
-        pass
-    for k in kids:
-        _stop_tree(int(k))
-
-
-def _interrupted(*_):
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    sys.stderr.write("Allrun: interrupted; stopping every run it "
-                     "started\n")
-    with _lock:
-        procs = list(_children)
-    for p in procs:
-        _stop_tree(p.pid)
-    # Reaped here with waitpid: the interrupted Popen.wait of the main
-    # thread holds the Popen's own lock
-    for p in procs:
-        deadline = time.time() + 30
-        try:
-            while os.waitpid(p.pid, os.WNOHANG)[0] == 0:
-                if time.time() > deadline:
-                    os.kill(p.pid, signal.SIGKILL)
-                    os.waitpid(p.pid, 0)
-                    break
-                time.sleep(0.05)
-        except (ChildProcessError, ProcessLookupError):
-            pass
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(130)
 
 
 def drive(here, options, work, argv):
@@ -327,12 +212,3 @@ def one_run(folder, what):
         raise SystemExit(1) from None
 
 
-def interruptible(main):
-    """Run main() so that Ctrl-C (SIGINT) or SIGTERM stops every process
-    it started (solvers, mpirun and its ranks, however deep), then the
-    driver with exit status 130: nothing after it (post-processing) runs.
-    An interrupted run continues from its last complete write when the
-    driver is called again. Returns main()'s exit status."""
-    signal.signal(signal.SIGINT, _interrupted)
-    signal.signal(signal.SIGTERM, _interrupted)
-    return main()

@@ -32,6 +32,13 @@ License
 #include "hardSphereInput.H"
 #include "AgglomerateBreakup.H"
 
+// * * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::label
+Foam::HardSphereCloud<CloudType>::startPositionInterval = 20;
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -212,6 +219,28 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::HardSphereCloud<CloudType>::stopInterval() const
+{
+    // The least common multiple of the two schedules
+    const label a = startPositionInterval;
+    const label b = cellOrder_.interval();
+    if (b <= 0)
+    {
+        return a;
+    }
+    label x = a;
+    label y = b;
+    while (y != 0)
+    {
+        const label r = x % y;
+        x = y;
+        y = r;
+    }
+    return a/x*b;
+}
+
 
 template<class CloudType>
 Foam::label Foam::HardSphereCloud<CloudType>::nPrimaries() const

@@ -56,6 +56,14 @@ void Foam::HardSphereCloud<CloudType>::evolve()
 
         this->solve(*this, td);
 
+        // A written time is where a restart starts: after the step's
+        // statistics (cloud function objects), which so add over the
+        // parcels in the order of a step that is not written
+        if (this->db().time().writeTime())
+        {
+            prepareRestart();
+        }
+
         rotationModel_->releaseVorticity(vorticity);
 
         // Nothing lost or made: in flight + deposited + escaped - injected
@@ -161,8 +169,21 @@ void Foam::HardSphereCloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
+    const label timeIndex = this->db().time().timeIndex();
+
+    // Every startPositionInterval steps the start positions come from the
+    // coordinates, as after a restart (stopInterval: a run stopped on
+    // request after the step before continues exactly)
+    if ((timeIndex - 1) % startPositionInterval == 0)
+    {
+        for (parcelType& p : *this)
+        {
+            p.stage().forgetPosition();
+        }
+    }
+
     // Parcels in cell order, in the list and in memory
-    if (cellOrder_.dueAtStart(this->db().time().timeIndex()))
+    if (cellOrder_.dueAtStart(timeIndex))
     {
         sortByCell();
     }
@@ -188,12 +209,6 @@ void Foam::HardSphereCloud<CloudType>::motion
     if (collisionModel_->active())
     {
         interactions(cloud, td);
-    }
-
-    // A written time is where a restart starts
-    if (this->db().time().writeTime())
-    {
-        prepareRestart();
     }
 
     collisionTime_ = timer.timeIncrement();
