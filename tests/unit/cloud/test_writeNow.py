@@ -8,7 +8,7 @@ field, the cloud's record and statistics state (its profiles add over
 the parcels in list order), the last step's profiles and the statistics
 rows, byte for byte. A cloud that never sorts (interval 0) stops after
 20 steps. The agglomerating box gas (cloudBoxCases) with profiles across
-the walls, 100 steps."""
+the walls, 100 steps, serial and on 2 ranks."""
 
 import signal
 import subprocess
@@ -51,27 +51,38 @@ def files(case, t):
     return out
 
 
-def stopped_case(tmp, interval, name):
+def stopped_case(tmp, interval, name, ranks=0):
     c = tmp / name
-    agglomerating_gas(c, STEPS * DT, 50, cloud=cloud(interval))
+    agglomerating_gas(c, STEPS * DT, 50, cloud=cloud(interval),
+                      decompose=(ranks or 1, 1, 1))
     edit(c / "system/controlDict", "stopAt endTime;", "stopAt writeNow;")
-    run_case(c)
+    run_case(c, parallel=ranks)
     return c
 
 
-def test_stopped_run_continues_exactly(case_dir, foam_env):
+@pytest.mark.parametrize("ranks", [0, 2])
+def test_stopped_run_continues_exactly(ranks, case_dir, foam_env):
+    """Serial, and on 2 ranks (the request reduced over the ranks; the
+    run continued from the processor folders, then reconstructed)."""
     whole = case_dir / "whole"
-    agglomerating_gas(whole, STEPS * DT, 50, cloud=cloud(8))
-    run_case(whole)
+    agglomerating_gas(whole, STEPS * DT, 50, cloud=cloud(8),
+                      decompose=(ranks or 1, 1, 1))
+    run_case(whole, parallel=ranks)
 
-    part = stopped_case(case_dir, 8, "part")
+    part = stopped_case(case_dir, 8, "part", ranks)
     log = (part / "log.aggloPimpleFoam").read_text()
     assert "writing at the end of step 40 and stopping" in log
     written = [t.name for t in time_dirs(part)]
     assert [float(t) for t in written] == pytest.approx([0, 40 * DT],
                                                         rel=1e-12)
     edit(part / "system/controlDict", "stopAt writeNow;", "stopAt endTime;")
-    assert solver(part, "log.restart") == 0
+    if ranks:
+        run(["mpirun", "-np", str(ranks), "--oversubscribe",
+             foam_bin("aggloPimpleFoam"), "-parallel"], part, "log.restart")
+        run([foam_bin("reconstructPar"), "-latestTime"], part,
+            "log.reconstructPar.restart")
+    else:
+        assert solver(part, "log.restart") == 0
 
     end = time_dirs(whole)[-1].name
     assert time_dirs(part)[-1].name == end
