@@ -181,6 +181,7 @@ def test_stop_not_asked_by_the_driver_is_not_the_end(tmp_path):
     os.kill(solver, signal.SIGUSR2)
     out, err = proc.communicate(timeout=60)
     assert proc.returncode == 1, out + err
+    assert "StoppedOnRequest" in err
     assert "stopped on SIGUSR2 before its end; run again" in err
     assert (tmp_path / "written").is_file()
     assert not (tmp_path / "done").exists()

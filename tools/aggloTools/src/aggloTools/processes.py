@@ -88,6 +88,12 @@ def run_logged(cmd, cwd, log, append=False):
 STOPPED_ON_REQUEST = "sigStopAtWriteNow : setting up write and stop"
 
 
+class StoppedOnRequest(CommandError):
+    """A solver that wrote and stopped on WRITE_AND_STOP which the driver
+    did not send: the run is not finished, it continues from that write
+    when run again."""
+
+
 def run_solver(case, cmd, label, progress, every, append=False,
                log="log.aggloPimpleFoam"):
     """Run the OpenFOAM solver command in case with a progress line every
@@ -95,10 +101,10 @@ def run_solver(case, cmd, label, progress, every, append=False,
     with append (a continued run). The solver writes its time step and
     stops on WRITE_AND_STOP (its -opt-switch stopAtWriteNowSignal): a
     driver interrupted meanwhile exits (interruptible), and a stop that
-    the driver did not ask for is a CommandError, not the end of the run
-    (the run continues from that write when called again); so is a
-    solver that fails or does not end with End among the last 20 lines
-    of the log. Returns the wall time in seconds."""
+    the driver did not ask for raises StoppedOnRequest, not the end of
+    the run (it continues from that write when called again); a solver
+    that fails or does not end with End among the last 20 lines of the
+    log raises CommandError. Returns the wall time in seconds."""
     case = Path(case)
     t0 = time.time()
     app = Path(str(cmd[0])).name
@@ -125,7 +131,7 @@ def run_solver(case, cmd, label, progress, every, append=False,
     if STOPPED_ON_REQUEST in text:
         if _stopping.is_set():
             _park()
-        raise CommandError(f"{label}: {name} wrote its time step and "
+        raise StoppedOnRequest(f"{label}: {name} wrote its time step and "
                            f"stopped on {WRITE_AND_STOP.name} before its "
                            f"end; run again to continue, see {case / log}")
     if proc.returncode != 0:

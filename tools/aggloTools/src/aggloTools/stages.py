@@ -24,7 +24,8 @@ from pathlib import Path
 
 from . import runlock, times
 from .processes import (  # noqa: F401 (the drivers' names for them)
-    WRITE_AND_STOP, interruptible, run_logged, run_solver)
+    WRITE_AND_STOP, StoppedOnRequest, interruptible, run_logged,
+    run_solver)
 from .runner import CommandError
 
 # ------------------------------------------------------------------ options

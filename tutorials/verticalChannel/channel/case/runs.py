@@ -144,6 +144,8 @@ class Channel:
         try:
             wall = stages.run_solver(d, cmd, tag, progress,
                                      self.a.every, append=True)
+        except stages.StoppedOnRequest:
+            raise                   # says so: not finished, run again
         except CommandError:
             raise CommandError(f"aggloPimpleFoam failed, see "
                                f"{d}/log.aggloPimpleFoam") from None
