@@ -7,9 +7,12 @@ continued from there, ends as the uninterrupted run does: every written
 field, the cloud's record and statistics state (its profiles add over
 the parcels in list order), the last step's profiles and the statistics
 rows, byte for byte. A cloud that never sorts (interval 0) stops after
-20 steps. The agglomerating box gas (cloudBoxCases) with profiles across
-the walls, 100 steps, serial and on 2 ranks."""
+20 steps; two clouds stop at a step of both. The agglomerating box gas
+(cloudBoxCases) with profiles across the walls, 100 steps, serial and on
+2 ranks."""
 
+import math
+import shutil
 import signal
 import subprocess
 import time
@@ -128,3 +131,52 @@ def test_signal_writes_and_stops(case_dir, foam_env):
     last = time_dirs(c)[-1].name
     step = round(float(last) / DT)
     assert step % 140 == 0 and 10 <= step < 4000
+
+
+def two_clouds(case, intervals):
+    """The gas with a second cloud 'second' (the same particles), each
+    cloud with its own cellOrderInterval, both in cloudProperties."""
+    agglomerating_gas(case, 200 * DT, 200, cloud=cloud(intervals[0]))
+    props = (case / "constant" / "kinematicCloudProperties").read_text()
+    old = f"cellOrderInterval {intervals[0]};"
+    assert props.count(old) == 1
+    (case / "constant" / "secondProperties").write_text(
+        props.replace("kinematicCloudProperties", "secondProperties")
+        .replace(old, f"cellOrderInterval {intervals[1]};"))
+    (case / "constant" / "cloudProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object cloudProperties; }\nclouds (kinematicCloud second);\n")
+    for d in ("lagrangian", "uniform/lagrangian"):
+        src = case / "0" / d / "kinematicCloud"
+        if src.is_dir():
+            shutil.copytree(src, case / "0" / d / "second")
+    return case
+
+
+def test_two_clouds_stop_at_a_step_of_both(case_dir, foam_env):
+    """Two clouds with cellOrderInterval 8 and 12 (stop intervals 40 and
+    60): the run stops after the first step both allow, their least
+    common multiple 120, and continued from there ends as the
+    uninterrupted run does."""
+    period = math.lcm(20, 8, 20, 12)
+    whole = two_clouds(case_dir / "whole", (8, 12))
+    run_case(whole)
+
+    part = two_clouds(case_dir / "part", (8, 12))
+    edit(part / "system/controlDict", "stopAt endTime;", "stopAt writeNow;")
+    run_case(part)
+    log = (part / "log.aggloPimpleFoam").read_text()
+    assert f"stop at the end of step {period} (a multiple of {period}:" \
+        in log
+    assert [float(t.name) for t in time_dirs(part)] == \
+        pytest.approx([0, period * DT], rel=1e-12)
+    edit(part / "system/controlDict", "stopAt writeNow;", "stopAt endTime;")
+    assert solver(part, "log.restart") == 0
+
+    end = time_dirs(whole)[-1].name
+    assert time_dirs(part)[-1].name == end
+    a, b = files(whole, end), files(part, end)
+    assert any("second" in k for k in a) and len(a) > 20
+    assert a.keys() == b.keys()
+    differ = [k for k in a if a[k] != b[k]]
+    assert differ == [], differ

@@ -29,6 +29,7 @@ License
 #include "wallPolyPatch.H"
 #include "clockTime.H"
 #include "hardSphereCloudState.H"
+#include "stepPeriod.H"
 #include "hardSphereInput.H"
 #include "AgglomerateBreakup.H"
 
@@ -223,22 +224,11 @@ Foam::HardSphereCloud<CloudType>::HardSphereCloud
 template<class CloudType>
 Foam::label Foam::HardSphereCloud<CloudType>::stopInterval() const
 {
-    // The least common multiple of the two schedules
-    const label a = startPositionInterval;
-    const label b = cellOrder_.interval();
-    if (b <= 0)
-    {
-        return a;
-    }
-    label x = a;
-    label y = b;
-    while (y != 0)
-    {
-        const label r = x % y;
-        x = y;
-        y = r;
-    }
-    return a/x*b;
+    // Both schedules' steps
+    stepPeriod period;
+    period.include(startPositionInterval);
+    period.include(cellOrder_.interval());
+    return period.steps();
 }
 
 
