@@ -63,6 +63,19 @@ def test_models_choose_the_agglomeration_clouds(tmp_path):
      "agglomeration would differ from this preset's in"),
     ("stagesFrom shared;", "stagesFrom shared: that preset takes its "
      "stages from smoke: name that one"),
+    ("perConfiguration C4;", "perConfiguration must be a dictionary"),
+    ("perConfiguration { C9 { nParticles 3000; couplingScale 2; } }",
+     "unknown configuration 'C9'; valid: C1 C2 C3 C4 R80 R60"),
+    ("perConfiguration { C4 { nParticles 3000; } }",
+     "perConfiguration/C4: couplingScale missing"),
+    ("perConfiguration { C4 { nParticles 3000; couplingScale 2; seed 3; } }",
+     "unknown entry 'seed' in channel.case: presets/bad: "
+     "perConfiguration/C4; valid "
+     "entries: couplingScale nParticles"),
+    ("perConfiguration { C4 { nParticles 30.5; couplingScale 2; } }",
+     "perConfiguration/C4: nParticles '30.5' is not a whole number"),
+    ("perConfiguration { C4 { nParticles 3000; couplingScale 0; } }",
+     "perConfiguration/C4: couplingScale '0' is out of range (0, inf)"),
 ])
 def test_bad_entries_refused(tmp_path, extra, message):
     case = with_presets(tmp_path, ("shared", "smoke", "stagesFrom smoke;"),
@@ -71,6 +84,34 @@ def test_bad_entries_refused(tmp_path, extra, message):
     res = settings(case, "bad")
     assert res.returncode == 1
     assert message in res.stderr, res.stderr
+
+
+def test_a_configuration_of_its_own_particle_number(tmp_path):
+    """perConfiguration gives C4 (two-way) and R80 (one-way: no coupling
+    to scale) their own particle number; the other configurations keep
+    the preset's, and a preset whose stages are shared must say the
+    same."""
+    extra = ("perConfiguration { C4 { nParticles 6000; couplingScale 3; }"
+             " R80 { nParticles 4000; couplingScale 5; } }")
+    case = with_presets(tmp_path, ("own", "smoke", extra),
+                        ("sharedOwn", "smoke", extra + " stagesFrom own;"),
+                        ("sharedNot", "smoke", "stagesFrom own;"))
+
+    def entries(config, preset="own"):
+        res = settings(case, preset, config, "release")
+        assert res.returncode == 0, res.stderr
+        return {k: v for k, v in (line.rstrip(";").split(None, 1)
+                                  for line in res.stdout.splitlines()
+                                  if line.startswith(("nParticles",
+                                                      "couplingScale")))}
+    assert entries("C4") == {"nParticles": "6000", "couplingScale": "3"}
+    assert entries("C2") == {"nParticles": "2000", "couplingScale": "1"}
+    assert entries("R80") == {"nParticles": "4000", "couplingScale": "1"}
+    assert entries("C4", "sharedOwn")["nParticles"] == "6000"
+    res = settings(case, "sharedNot", "C4", "release")
+    assert res.returncode == 1
+    assert "would differ from this preset's in perConfiguration" \
+        in res.stderr, res.stderr
 
 
 def test_a_stage_entry_that_differs_is_named(tmp_path):

@@ -13,13 +13,14 @@ from channelTestRuns import script
 S2 = 3600.0                     # s = 60
 
 
-def run(c, m, col, agg, rel=0.01):
+def run(c, m, col, agg, rel=0.01, s2=S2):
     """A run whose scaled frequencies are col and agg (per T*, the
-    paper's number), each with a relative sigma rel."""
-    f_col, f_agg = col / S2, agg / S2
+    paper's number), each with a relative sigma rel; s2: the run's
+    (6e6/N)^2."""
+    f_col, f_agg = col / s2, agg / s2
     return {"f_col": f_col, "f_agg": f_agg, "sigma_col": rel * f_col,
             "sigma_agg": rel * f_agg, "alpha_f": f_agg / f_col,
-            "scale": S2, "f_col_scaled": col, "f_agg_scaled": agg,
+            "scale": s2, "f_col_scaled": col, "f_agg_scaled": agg,
             "events_col": 1e4, "events_agg": 1e3, "massRelErr": 0.0,
             "N_col_end": 2e4, "alpha_end": agg / col,
             "primariesConstant": True, "countersNonDecreasing": True,
@@ -108,3 +109,34 @@ def test_statements(mods):
     del res[("R80", "MAM")]
     rows = rows_by_name(reg, channel, res)
     assert "statement f_agg R80/C1, MAM over EAM" not in rows
+
+
+def test_a_configuration_of_its_own_particle_number(mods):
+    """C4 released 3e5 particles (s^2 400), C2 1e5 (s^2 3600): the C4/C2
+    ratios and statements compare the frequencies scaled to the paper's
+    particles, which are Table D.6's here, so each ratio is the paper's
+    (not 9 times it: the raw frequencies of 3e5 particles)."""
+    reg, channel = mods
+    res = paper_runs(channel, rel=0.02)
+    d6 = channel.TABLE_D6["C4"]
+    for m in ("EAM", "MAM"):
+        res[("C4", m)] = run("C4", m, d6["fcol"][m], d6["fagg"][m],
+                             rel=0.02, s2=400.0)
+    rows = rows_by_name(reg, channel, res)
+    for m in ("EAM", "MAM"):
+        for q in ("col", "agg"):
+            r = rows[f"{m} f_{q} C4/C2 (4 um/12 um)"]
+            paper = d6[f"f{q}"][m] / channel.TABLE_D6["C2"][f"f{q}"][m]
+            assert r["sim"] == pytest.approx(paper, rel=1e-12)
+            assert r["status"] == "PASS"
+        assert rows[f"{m} alpha_f C4/C2 (4 um/12 um)"]["status"] == "PASS"
+        st = rows[f"statement {m} f_agg C4/C2"]
+        assert st["status"] == "PASS" and st["sim"] < 1
+        assert rows[f"direction {m} f_col C4/C2"]["status"] == "PASS"
+    # the same runs read without their particle numbers (one scale for
+    # all): every frequency ratio 9 times too large, the rows fail
+    for m in ("EAM", "MAM"):
+        res[("C4", m)]["scale"] = S2
+    rows = rows_by_name(reg, channel, res)
+    assert rows["EAM f_agg C4/C2 (4 um/12 um)"]["status"] == "FAIL"
+    assert rows["statement EAM f_agg C4/C2"]["status"] == "FAIL"

@@ -131,8 +131,13 @@ def test_pairs_derived_from_the_presets(pairs):
     # differs from it in the wall-normal entries alone
     assert pairs.check_pairs("timeStep") == [("regime64dt2", "regime64")]
     channel = script("channel.case.settings")
-    p, q = channel.preset("printed"), channel.preset("regime64dt2")
+    # the study's variants are C1's: a preset's entries for other
+    # configurations (regime64dt2's perConfiguration for C4) are none
+    p, q = channel.preset("printed", "C1"), channel.preset("regime64dt2",
+                                                           "C1")
     assert pairs.shortcut(p, q) == pairs.CHECKS["wallNormal"]["entries"]
+    assert "perConfiguration" in pairs.shortcut(
+        channel.preset("printed"), channel.preset("regime64dt2"))
     names = ["regime32", "regime48", "regime48n3"]
     assert pairs.check_pairs("particleNumber", names) == [
         ("regime48n3", "regime48")]

@@ -94,14 +94,16 @@ def release(case, time=None):
     the cell whose centre is nearest along each axis."""
     case = Path(case)
     s = settings.read_settings(case)
-    p = settings.preset(s["preset"])
+    p = settings.preset(s["preset"], s["configuration"])
     c = settings.configuration(s["configuration"])
     if time is None:
         time = times.time_dirs(case)[-1].name
     C = settings.cell_centres(case, time)
     grid = Grid(C, p["n"])
     U = fields.read_internal(case / time / "U")
-    N, dp = int(p["nParticles"]), float(c["d"])
+    # the run's own number (caseSettings: the preset's, or its
+    # perConfiguration entry's for this configuration)
+    N, dp = int(s["nParticles"]), float(c["d"])
     rng = np.random.default_rng(int(p["seed"]) + 1000)
     t0 = time_module.time()
     x = place(N, dp, p["L"], rng)
@@ -179,7 +181,7 @@ def seed_pairs(case, clouds):
     rewritten with the legacy positions file (located on reading)."""
     case = Path(case)
     s = settings.read_settings(case)
-    p = settings.preset(s["preset"])
+    p = settings.preset(s["preset"], s["configuration"])
     n_pairs = int(p.get("seededPairs", 0))
     if not n_pairs:
         return

@@ -30,6 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from aggloTools import casesettings, fields
+from aggloTools.foamfile import check_keys
 from channel import TUTORIAL
 from channel.case.breakup import breakup_entry, breakup_models
 
@@ -67,8 +68,12 @@ COMMON_KEYS = {"delta", "Ubar", "nu", "rhoInf", "rhoParticle", "perturb",
 PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "unladen", "release", "dispersion", "agglomeration", "window",
                "writeStar", "profileBins", "seededPairs", "models",
-               "stagesFrom"} | COMMON_KEYS
+               "stagesFrom", "perConfiguration"} | COMMON_KEYS
 CONFIGURATION_KEYS = {"subModels", "wall", "d", "en"}
+#: What a preset's perConfiguration entry sets for one configuration: the
+#: particle number and, with it, the two-way coupling's scale (both given:
+#: couplingScale 6e6/nParticles keeps the paper's mass loading)
+PER_CONFIGURATION_KEYS = ("nParticles", "couplingScale")
 N = casesettings.Number
 #: What each numeric entry must be (the window is checked against the
 #: agglomeration phase in preset())
@@ -96,8 +101,10 @@ def read_presets():
         {"configurations": CONFIGURATION_KEYS})
 
 
-def preset(name):
-    """The merged settings of a preset (common values first)."""
+def preset(name, config=None):
+    """The merged settings of a preset (common values first); with
+    config, those of that configuration's runs (the preset's
+    perConfiguration entry for it applied, the entry itself left out)."""
     p = casesettings.checked(
         casesettings.merged(read_presets(), name, "channel.case",
                             exclude=("configurations",)),
@@ -128,8 +135,42 @@ def preset(name):
                             "models: each of them")
     if len(set(p["models"])) < len(p["models"]):
         sys.exit(f"channel.case: presets/{name}: models names a model twice")
+    p["perConfiguration"] = per_configuration(p)
     p["stagesFrom"] = shared_stages(p)
+    if config is not None:
+        configuration(config)
+        p.update(p.pop("perConfiguration").get(config, {}))
     return p
+
+
+def per_configuration(p):
+    """The preset p's perConfiguration entry checked: configuration name
+    -> {nParticles, couplingScale}, both given (the particle number of
+    that configuration's runs and the coupling's scale that goes with
+    it); {} without the entry."""
+    where = f"channel.case: presets/{p['name']}: perConfiguration"
+    entry = p.get("perConfiguration", {})
+    if not isinstance(entry, dict):
+        sys.exit(f"{where} must be a dictionary: configuration name ->"
+                 " { nParticles N; couplingScale S; }")
+    out = {}
+    for cname, values in entry.items():
+        casesettings.named(read_presets()["configurations"], cname,
+                           "configuration", where)
+        if not isinstance(values, dict):
+            sys.exit(f"{where}: {cname} must be a dictionary"
+                     " { nParticles N; couplingScale S; }")
+        check_keys(values, PER_CONFIGURATION_KEYS, f"{where}/{cname}")
+        missing = [k for k in PER_CONFIGURATION_KEYS if k not in values]
+        if missing:
+            sys.exit(f"{where}/{cname}: {' and '.join(missing)} missing:"
+                     " give nParticles and couplingScale together (the"
+                     " coupling's scale 6e6/nParticles keeps the paper's"
+                     " mass loading)")
+        out[cname] = casesettings.checked(
+            values, {k: PRESET_NUMBERS[k] for k in PER_CONFIGURATION_KEYS},
+            f"{where}/{cname}")
+    return out
 
 
 #: What a preset whose earlier stages are another's (stagesFrom) may
@@ -190,7 +231,7 @@ def end_time(p, stage):
 
 
 def settings(pname, cname, stage, models=(), nprocs=1):
-    p, c = preset(pname), configuration(cname)
+    p, c = preset(pname, cname), configuration(cname)
     casesettings.choice(stage, STAGES, "channel.case: stage")
     for m in models:
         casesettings.choice(m, MODELS, "channel.case: model")

@@ -12,6 +12,15 @@ from channel.case import settings
 TABLE_D6 = settings.TABLE_D6
 
 
+def run_label(p, k, r):
+    """'C2 EAM'; with the particle number where the run released another
+    than the preset's (its perConfiguration entry): its counts per volume
+    and volume fraction are of that number."""
+    n = r["nParticles"]
+    return f"{k[0]} {k[1]}" + (f" (N = {n:g})" if n != p["nParticles"]
+                               else "")
+
+
 def read_profiles(p, adir, cloud):
     """profiles.dat of the last write with per-volume values and the
     volume fraction based on the geometric slab volumes. Files written
@@ -51,14 +60,13 @@ def plots(out, p, res, runs):
     import matplotlib.ticker  # noqa: F401
 
     keys = sorted(res)
-    s2 = (settings.N_PAPER / p["nParticles"])**2
     w0, w1 = p["window"]
     # time histories, with the paper's rates (Table D.6, scaled to this
-    # preset's particles by 1/s^2) over the window where it gives them
+    # run's particles by 1/s^2) over the window where it gives them
     fig, ax = plt.subplots(2, 2, figsize=(11, 8))
     for i, k in enumerate(keys):
         s = res[k]["_series"]
-        lab = f"{k[0]} {k[1]}"
+        lab = run_label(p, k, res[k])
         colour = f"C{i}"
         ax[0, 0].plot(s["T"], s["nCol"], label=lab, color=colour)
         ax[0, 1].plot(s["T"], s["nAgg"], label=lab, color=colour)
@@ -72,7 +80,8 @@ def plots(out, p, res, runs):
             for a, q, n in ((ax[0, 0], "fcol", s["nCol"]),
                             (ax[0, 1], "fagg", s["nAgg"])):
                 n0 = float(np.interp(w0, s["T"], n))
-                a.plot([w0, w1], [n0, n0 + ref[q][k[1]] / s2 * (w1 - w0)],
+                a.plot([w0, w1], [n0, n0 + ref[q][k[1]] / res[k]["scale"]
+                                  * (w1 - w0)],
                        "--", color=colour, lw=0.9,
                        label=f"paper {lab} (rate / s^2)")
             ax[1, 0].axhline(ref["fagg"][k[1]] / ref["fcol"][k[1]],
@@ -177,7 +186,7 @@ def profile_plots(out, p, res, runs, plt):
         t = read_profiles(p, *runs[k])
         if t is None:
             continue
-        colour, lab = f"C{i}", f"{k[0]} {k[1]}"
+        colour, lab = f"C{i}", run_label(p, k, res[k])
         nb = len(t["x"])
         V = Lx * Lz * Ly / nb
         ncol = fold(t["nColPerVolume"]) * 2 * V     # both halves' counts

@@ -83,7 +83,10 @@ def analyse_run(p, adir, cloud):
     r["alpha_f"] = r["f_agg"] / r["f_col"] if r["f_col"] > 0 else None
     r["alpha_end"] = (r["N_agg_end"] / r["N_col_end"]
                       if r["N_col_end"] > 0 else None)
-    s2 = (settings.N_PAPER / p["nParticles"])**2
+    # the particles this run released (a preset's perConfiguration entry
+    # may give a configuration its own number)
+    r["nParticles"] = int(settings.read_settings(adir)["nParticles"])
+    s2 = (settings.N_PAPER / r["nParticles"])**2
     r["scale"] = s2
     r["f_col_scaled"] = r["f_col"] * s2
     r["f_agg_scaled"] = r["f_agg"] * s2

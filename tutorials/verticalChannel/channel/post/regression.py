@@ -127,8 +127,7 @@ def regression(p, res):
                 continue
             pa, pb = TABLE_D6[a], TABLE_D6[b]
             for q in ("col", "agg"):
-                r, s = ratio(ra[f"f_{q}"], ra[f"sigma_{q}"],
-                             rb[f"f_{q}"], rb[f"sigma_{q}"])
+                r, s = statements.frequency_ratio(ra, rb, q)
                 add(f"{m} f_{q} {a}/{b} ({what})", r, s,
                     pa[f"f{q}"][m] / pb[f"f{q}"][m])
             # alpha_f ratio
@@ -150,8 +149,7 @@ def regression(p, res):
         for m in models:
             ra, rb = res.get((a, m)), res.get((b, m))
             if ra and rb:
-                r, s = ratio(ra[f"f_{q}"], ra[f"sigma_{q}"],
-                             rb[f"f_{q}"], rb[f"sigma_{q}"])
+                r, s = statements.frequency_ratio(ra, rb, q)
                 direction(f"direction {m} f_{q} {a}/{b}", r, s, sign)
     for c in sorted({c for c, _ in res}):
         re_, rm = res.get((c, "EAM")), res.get((c, "MAM"))
@@ -176,8 +174,7 @@ def regression(p, res):
             ra, rb = res.get((c, m)), res.get(("C1", m))
             if ra and rb:
                 for q in ("col", "agg"):
-                    r, s = ratio(ra[f"f_{q}"], ra[f"sigma_{q}"],
-                                 rb[f"f_{q}"], rb[f"sigma_{q}"])
+                    r, s = statements.frequency_ratio(ra, rb, q)
                     add(f"{m} f_{q} {c}/C1 (e_n 0.{c[1:]}/0.97)", r, s,
                         None, "no published value" if r else "")
     # the paper's conclusions, each judged with its sigma

@@ -110,13 +110,27 @@ def report_head(p, res):
             " -np 1 (README.md, 'Run times').", ""]
 
 
+def particle_numbers(p, res):
+    """'N = 100000 per cloud' and, where a configuration's runs released
+    another number (the preset's perConfiguration), '(C4: 300000)'; and
+    the s^2 likewise."""
+    own = sorted({(c, r["nParticles"]) for (c, _), r in res.items()
+                  if r["nParticles"] != p["nParticles"]})
+
+    def text(f):
+        extra = "; ".join(f"{c}: {f(n)}" for c, n in own)
+        return f"{f(p['nParticles'])}" + (f" ({extra})" if extra else "")
+    return (text(lambda n: f"{n:g}"),
+            text(lambda n: f"{(settings.N_PAPER / n)**2:g}"))
+
+
 def write_regression(path, p, rows, fluid, res):
+    n, s2 = particle_numbers(p, res)
     lines = report_head(p, res) + [
              f"verticalChannel regression, preset {p['name']}:"
-             f" N = {p['nParticles']:g} per cloud, frequencies by Eq. 87"
+             f" N = {n} per cloud, frequencies by Eq. 87"
              f" over T*agg = {p['window'][0]:g}-{p['window'][1]:g},",
-             f"scaled to the paper by s^2 = (6e6/N)^2 ="
-             f" {(settings.N_PAPER / p['nParticles'])**2:g};"
+             f"scaled to the paper by s^2 = (6e6/N)^2 = {s2};"
              " ratios pass if |sim - paper| <= max(3 sigma, 15 % paper)"
              " (doc/cases.md A.9), sigma from batch means",
              "(10 sub-windows) or Poisson, whichever is larger."

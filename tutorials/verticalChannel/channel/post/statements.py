@@ -14,6 +14,7 @@ where the difference is within 3 sigma.
 import math
 
 from aggloTools import regression as reg
+from aggloTools.uncertainty import ratio
 
 #: The preset for comparisons with the paper (README.md, "Presets")
 PAPER_REGIME = "regime64"
@@ -46,17 +47,30 @@ MODEL_GAIN = ("MAM gains more agglomerations than EAM from a lower e_n,p"
               " (Table 4)", ("R80", "R60"))
 
 
+def frequency_ratio(ra, rb, q):
+    """The ratio of the frequencies f_q (col, agg) of two runs scaled to
+    the paper's particles (each run's s^2: a configuration may release its
+    own number) and its sigma; (None, None) without events. Runs of one
+    particle number: the ratio of their frequencies as they are."""
+    r, s = ratio(ra[f"f_{q}"], ra[f"sigma_{q}"], rb[f"f_{q}"],
+                 rb[f"sigma_{q}"])
+    if r is None:
+        return r, s
+    k = ra["scale"] / rb["scale"]
+    return r * k, s * k
+
+
 def quantity_ratio(ra, rb, q):
-    """The ratio of q (col, agg: the frequencies; alpha: alpha_f) of two
-    runs and its sigma (relative errors in quadrature); (None, None)
-    without events."""
+    """The ratio of q (col, agg: the frequencies scaled to the paper's
+    particles; alpha: alpha_f) of two runs and its sigma (relative errors
+    in quadrature); (None, None) without events."""
     qs = ("col", "agg") if q == "alpha" else (q,)
     if any(ra[f"f_{x}"] <= 0 or rb[f"f_{x}"] <= 0 for x in qs):
         return None, None
     if q == "alpha":
         r = ra["alpha_f"] / rb["alpha_f"]
     else:
-        r = ra[f"f_{q}"] / rb[f"f_{q}"]
+        r = ra[f"f_{q}"] / rb[f"f_{q}"] * (ra["scale"] / rb["scale"])
     rel = math.sqrt(sum((ra[f"sigma_{x}"] / ra[f"f_{x}"])**2
                         + (rb[f"sigma_{x}"] / rb[f"f_{x}"])**2 for x in qs))
     return r, r * rel

@@ -232,7 +232,7 @@ def progress(name, runs=None):
     agglomeration once the dispersion is done (concentration; None
     before) and the agglomeration stage's so far (agglomeration_so_far).
     None where nothing has run."""
-    p = settings.preset(name)
+    p = settings.preset(name, "C1")
     base = runs_base(runs, name)
     stages = {}
     for folder, last, markers in STAGE_DIRS:
@@ -299,7 +299,7 @@ def stage_times(base):
 def analyse_variant(name, runs=None):
     """The study's quantities of one variant (None if its C1
     agglomeration stage has not finished)."""
-    p = settings.preset(name)
+    p = settings.preset(name, "C1")
     base = runs_base(runs, name)
     dirs = post.run_dirs(name, base)
     if not all(("C1", m) in dirs for m in MODELS):

@@ -39,7 +39,7 @@ def shortcut(a, b):
 
 def presets(names=None):
     """The settings of the presets names (default: every variant's)."""
-    return {n: settings.preset(n)
+    return {n: settings.preset(n, "C1")
             for n in names or [n for n, _ in VARIANTS]}
 
 
