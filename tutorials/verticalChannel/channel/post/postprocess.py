@@ -30,6 +30,7 @@ from channel.plots.matrix import matrix_figure
 from channel.plots.profiles import picture, plots  # noqa: F401
 from channel.post.regression import regression
 from channel.post.report import compare, write_regression
+from channel.post.studyRuns import study_runs
 
 
 # ------------------------------------------------------------------ runs
@@ -140,8 +141,12 @@ def step_values(log, pattern, times=False):
 
 def u_tau(p, case):
     """u_tau from the mean driving gradient over the second half of the
-    stage in case (fluid check of doc/cases.md A.10): u_tau^2 = delta <G>."""
-    log = (case / "log.aggloPimpleFoam").read_text(errors="replace")
+    stage in case (fluid check of doc/cases.md A.10): u_tau^2 = delta <G>;
+    (None, None) where the case has no solver log."""
+    f = case / "log.aggloPimpleFoam"
+    if not f.is_file():
+        return None, None
+    log = f.read_text(errors="replace")
     g = np.array(step_values(log, r"pressure gradient = ([-0-9.eE+]+)"))
     if not len(g):
         return None, None
@@ -156,7 +161,9 @@ def post(pname, reference=False):
     p = settings.preset(pname)
     runs = run_dirs(pname)
     out = settings.report_dir(pname, reference)
-    if not runs:
+    # C1 from the regime study's record where the preset has no C1 run
+    study = study_runs(p, runs)
+    if not runs and not study:
         print(f"channel.post: no finished runs under runs/{pname}: "
               "nothing written")
         return 1
@@ -179,6 +186,11 @@ def post(pname, reference=False):
             res[k]["uTau"] = ut_k
             fluid[f"{k[0]} {adir.name}"] = {"uTauByUb": ut_k / p["Ubar"],
                                               "gradient": G_k}
+    for k, r in study.items():
+        res[k] = r
+        if r.get("uTau") and k[1] == p["models"][0]:
+            fluid[f"{k[0]} agglomeration (the regime study's)"] = {
+                "uTauByUb": r["uTau"] / p["Ubar"], "gradient": None}
     rows = regression(p, res)
     nf = write_regression(out / "regression.txt", p, rows, fluid, res)
     summary = {
@@ -193,7 +205,11 @@ def post(pname, reference=False):
         "regression": rows,
     }
     (out / "summary.json").write_text(json.dumps(summary, indent=1) + "\n")
-    plots(out, p, res, runs)
+    # time histories and profiles: of the runs' own files (none where
+    # every configuration's numbers are the study's)
+    own = {k: r for k, r in res.items() if "_series" in r}
+    if own:
+        plots(out, p, own, runs)
     matrix_figure(out, p, res)
     picture(out, p, runs)
     print((out / "regression.txt").read_text())

@@ -138,8 +138,9 @@ def write_regression(path, p, rows, fluid, res):
              ""]
     for k, v in fluid.items():
         lines.append(f"fluid {k}: u_tau/U_B = {v['uTauByUb']:.4f}"
-                     f" (paper 0.053; nominal 0.0541),"
-                     f" mean gradient {v['gradient']:.4g} m/s2")
+                     f" (paper 0.053; nominal 0.0541)" + (
+                         f", mean gradient {v['gradient']:.4g} m/s2"
+                         if v["gradient"] is not None else ""))
     lines.append("")
     lines += reg.table(rows, COLUMNS)
     n = reg.counts(rows)
