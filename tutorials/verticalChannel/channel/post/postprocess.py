@@ -28,7 +28,8 @@ from aggloTools.uncertainty import window_rate
 from channel.plots.matrix import matrix_figure
 # picture: postprocess.picture for the callers of the report
 from channel.plots.profiles import picture, plots  # noqa: F401
-from channel.post.regression import regression
+from channel.post.gridCheck import GRID_CHECK, grid_rows
+from channel.post.regression import R, regression
 from channel.post.report import compare, write_regression
 from channel.post.studyRuns import study_runs
 
@@ -157,6 +158,17 @@ def u_tau(p, case):
 
 # ------------------------------------------------------------------ post
 
+def grid_results(pname):
+    """The runs of the preset pname analysed as post's (with C1 from the
+    regime study where it has no C1 run): {(config, model): record}."""
+    p = settings.preset(pname)
+    runs = run_dirs(pname)
+    res = {k: analyse_run(p, adir, cloud)
+           for k, (adir, cloud) in runs.items()}
+    res.update(study_runs(p, res))
+    return res
+
+
 def post(pname, reference=False):
     p = settings.preset(pname)
     runs = run_dirs(pname)
@@ -192,6 +204,9 @@ def post(pname, reference=False):
             fluid[f"{k[0]} agglomeration (the regime study's)"] = {
                 "uTauByUb": r["uTau"] / p["Ubar"], "gradient": None}
     rows = regression(p, res)
+    if pname in GRID_CHECK:
+        # the judged ratios at the coarser grid too (gridCheck)
+        rows += grid_rows(R, res, grid_results(GRID_CHECK[pname]))
     nf = write_regression(out / "regression.txt", p, rows, fluid, res)
     summary = {
         "preset": pname,
