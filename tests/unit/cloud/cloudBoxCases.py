@@ -5,6 +5,7 @@ the event-log and restart-record tests, and the particle state of a
 written cloud. The box cases themselves are aggloTools.boxcase."""
 
 import math
+import shutil
 
 import numpy as np
 
@@ -83,6 +84,24 @@ def agglomerating_gas(case_dir, end_time, write_interval, decompose=(1,1,1),
              end_time=end_time, write_interval=write_interval,
              hard_sphere=hard_sphere or kernel("EAM"),
              decompose=decompose, cloud=cloud)
+
+
+def add_cloud(case, name, edit=None):
+    """A second cloud `name` in a box case: kinematicCloud's properties
+    (edit: a function of their text, e.g. another cellOrderInterval) and
+    particles, both clouds listed in constant/cloudProperties."""
+    text = (case / "constant" / "kinematicCloudProperties").read_text() \
+        .replace("kinematicCloudProperties", f"{name}Properties")
+    (case / "constant" / f"{name}Properties").write_text(
+        edit(text) if edit else text)
+    (case / "constant" / "cloudProperties").write_text(
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        f" object cloudProperties; }}\nclouds (kinematicCloud {name});\n")
+    for d in ("lagrangian", "uniform/lagrangian"):
+        src = case / "0" / d / "kinematicCloud"
+        if src.is_dir():
+            shutil.copytree(src, case / "0" / d / name)
+    return case
 
 
 def add_hard_sphere_entries(case_dir, entries):

@@ -16,7 +16,7 @@ import pytest
 from aggloTools import times
 from aggloTools.boxcase import run_case
 from aggloTools.runner import foam_bin, run
-from cloudBoxCases import primaries_gas
+from cloudBoxCases import add_cloud, primaries_gas
 
 def gas(case, decompose=(1, 1, 1)):
     """300 quartz primaries, periodic in x and z, walls in y, EAM: 40
@@ -136,17 +136,7 @@ def two_clouds(case):
     """The gas with a second cloud 'second' (the same particles and
     settings), both listed in constant/cloudProperties."""
     gas(case)
-    (case / "constant" / "secondProperties").write_text(
-        (case / "constant" / "kinematicCloudProperties").read_text()
-        .replace("kinematicCloudProperties", "secondProperties"))
-    (case / "constant" / "cloudProperties").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary;"
-        " object cloudProperties; }\nclouds (kinematicCloud second);\n")
-    for d in ("lagrangian", "uniform/lagrangian"):
-        src = case / "0" / d / "kinematicCloud"
-        if src.is_dir():
-            shutil.copytree(src, case / "0" / d / "second")
-    return case
+    return add_cloud(case, "second")
 
 
 @pytest.fixture(scope="module")

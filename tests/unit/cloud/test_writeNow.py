@@ -12,7 +12,6 @@ rows, byte for byte. A cloud that never sorts (interval 0) stops after
 2 ranks."""
 
 import math
-import shutil
 import signal
 import subprocess
 import time
@@ -24,7 +23,7 @@ from aggloTools.foamfile import edit
 from aggloTools.runner import foam_bin, run
 from aggloTools.stats import stats_rows
 from aggloTools.times import time_dirs
-from cloudBoxCases import agglomerating_gas
+from cloudBoxCases import add_cloud, agglomerating_gas
 
 DT = 1e-4
 STEPS = 100
@@ -137,20 +136,12 @@ def two_clouds(case, intervals):
     """The gas with a second cloud 'second' (the same particles), each
     cloud with its own cellOrderInterval, both in cloudProperties."""
     agglomerating_gas(case, 200 * DT, 200, cloud=cloud(intervals[0]))
-    props = (case / "constant" / "kinematicCloudProperties").read_text()
     old = f"cellOrderInterval {intervals[0]};"
-    assert props.count(old) == 1
-    (case / "constant" / "secondProperties").write_text(
-        props.replace("kinematicCloudProperties", "secondProperties")
-        .replace(old, f"cellOrderInterval {intervals[1]};"))
-    (case / "constant" / "cloudProperties").write_text(
-        "FoamFile { version 2.0; format ascii; class dictionary;"
-        " object cloudProperties; }\nclouds (kinematicCloud second);\n")
-    for d in ("lagrangian", "uniform/lagrangian"):
-        src = case / "0" / d / "kinematicCloud"
-        if src.is_dir():
-            shutil.copytree(src, case / "0" / d / "second")
-    return case
+
+    def other_interval(text):
+        assert text.count(old) == 1
+        return text.replace(old, f"cellOrderInterval {intervals[1]};")
+    return add_cloud(case, "second", other_interval)
 
 
 def test_two_clouds_stop_at_a_step_of_both(case_dir, foam_env):
