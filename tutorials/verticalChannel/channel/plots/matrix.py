@@ -68,6 +68,8 @@ def matrix_figure(out, p, res):
                         color=f"C{j}", ms=8, label=f"{m} (paper)")
         ax.set_yscale("log")
         ax.set_xticks(range(len(configs)))
+        # one unit per configuration, however few ran
+        ax.set_xlim(-0.5, len(configs) - 0.5)
         ax.set_xticklabels(configs)
         ax.set_xlabel("configuration")
         ax.set_ylabel(label)
