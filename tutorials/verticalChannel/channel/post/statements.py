@@ -64,13 +64,12 @@ def quantity_ratio(ra, rb, q):
     """The ratio of q (col, agg: the frequencies scaled to the paper's
     particles; alpha: alpha_f) of two runs and its sigma (relative errors
     in quadrature); (None, None) without events."""
-    qs = ("col", "agg") if q == "alpha" else (q,)
+    if q != "alpha":
+        return frequency_ratio(ra, rb, q)
+    qs = ("col", "agg")
     if any(ra[f"f_{x}"] <= 0 or rb[f"f_{x}"] <= 0 for x in qs):
         return None, None
-    if q == "alpha":
-        r = ra["alpha_f"] / rb["alpha_f"]
-    else:
-        r = ra[f"f_{q}"] / rb[f"f_{q}"] * (ra["scale"] / rb["scale"])
+    r = ra["alpha_f"] / rb["alpha_f"]
     rel = math.sqrt(sum((ra[f"sigma_{x}"] / ra[f"f_{x}"])**2
                         + (rb[f"sigma_{x}"] / rb[f"f_{x}"])**2 for x in qs))
     return r, r * rel
