@@ -322,3 +322,26 @@ def test_post_refuses_a_wrong_runs_folder(tmp_path):
     with pytest.raises(SystemExit):               # one place or the other
         regime.main(["channel.regime", "post", "--reference", "--out",
                      str(tmp_path)])
+
+
+def test_earlier_results_kept_beside_other_configurations(tmp_path):
+    """post --earlier: a variant whose folder holds other configurations'
+    runs (the matrix's C2 at regime64, an unladen LES at regime48) but no
+    C1 keeps its finished C1 result from the earlier regime.json, marked
+    with where it came from, so that the time-step pair regime64dt2 over
+    regime64 is judged; a variant whose C1 is being run again is
+    reported as that run stands."""
+    regime = script("channel.regime.study")
+    earlier = regime.TUTORIAL / "results" / "regime" / "regime.json"
+    runs = tmp_path / "runs"
+    (runs / "regime64" / "C2" / "dispersion").mkdir(parents=True)
+    (runs / "regime48" / "unladen").mkdir(parents=True)
+    (runs / "regime32" / "C1" / "dispersion").mkdir(parents=True)
+    res = regime.run_post(runs, tmp_path / "out", earlier=earlier)
+    v = {x["name"]: x for x in res["variants"]}
+    kept = regime.earlier_results(earlier)
+    for name in ("regime64", "regime48", "small"):
+        assert v[name]["result"] == kept[name]
+        assert v[name]["from"] == str(earlier)
+    assert v["regime32"]["result"] is None and "from" not in v["regime32"]
+    assert "progress" in v["regime32"]

@@ -24,7 +24,8 @@ post takes every variant with a finished agglomeration stage there;
 of the others it reports how far they are and what their release and
 dispersion stages show so far (an interim, not the window). --earlier
 JSON keeps the finished results of that earlier regime.json for the
-variants whose runs are not under --runs (marked so). A --runs
+variants whose C1 runs are not under --runs (marked so; the folder may
+hold other configurations' runs). A --runs
 folder that holds no variant's runs is refused before anything is
 written; the three files are written together (each to a temporary
 file first), so a failed post leaves the earlier ones as they were."""
@@ -73,10 +74,12 @@ def earlier_results(path):
 def run_post(runs=None, out=None, names=None, reference=False,
              earlier=None):
     """The study's report of the variants under runs; with earlier (an
-    earlier regime.json), a variant with no runs there keeps its
+    earlier regime.json), a variant with no C1 runs there keeps its
     finished result from it (said so: its runs are gone, its numbers
     were measured), so that a variant run later is compared with those
-    run before."""
+    run before. Its folder may hold other configurations (the Table D.6
+    matrix runs C2 and on at regime64 and regime48, with their unladen
+    LES): the study is C1's."""
     kept = earlier_results(earlier) if earlier else {}
     runs_dir = Path(runs or TUTORIAL / "runs")
     if not runs_dir.is_dir():
@@ -96,7 +99,7 @@ def run_post(runs=None, out=None, names=None, reference=False,
              "runs": str(runs_base(runs, name)),
              "result": analyse_variant(name, runs)}
         if v["result"] is None and name in kept \
-                and not runs_base(runs, name).is_dir():
+                and not (runs_base(runs, name) / "C1").is_dir():
             v["result"] = kept[name]
             v["from"] = str(earlier)
         if v["result"] is None:
