@@ -185,3 +185,39 @@ def test_stop_not_asked_by_the_driver_is_not_the_end(tmp_path):
     assert "stopped on SIGUSR2 before its end; run again" in err
     assert (tmp_path / "written").is_file()
     assert not (tmp_path / "done").exists()
+
+
+def test_interrupted_driver_gives_its_lock_back(tmp_path):
+    """A driver holding its run folder's lock, interrupted while its
+    solver runs: the solver writes and ends, the driver exits 130 and the
+    lock is gone (it was left for the next call to take over as stale),
+    so a second driver takes the folder without a word about it."""
+    (tmp_path / "solver.py").write_text(FAKE_SOLVER)
+    runs = tmp_path / "runs"
+    driver = tmp_path / "driver.py"
+    driver.write_text(textwrap.dedent(f"""
+        import sys
+        from pathlib import Path
+        from aggloTools import processes, runlock
+        def main():
+            with runlock.held(Path("{runs}"), "test driver"):
+                processes.run_solver("{tmp_path}", [sys.executable,
+                                  "{tmp_path}/solver.py"], "x",
+                                  lambda c: "", 60)
+            return 0
+        sys.exit(processes.interruptible(main))
+    """))
+    proc = subprocess.Popen([sys.executable, str(driver)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, start_new_session=True)
+    pid = tmp_path / "solver.pid"
+    t0 = time.time()
+    while not pid.exists() or not pid.read_text().strip():
+        assert proc.poll() is None and time.time() - t0 < 30
+        time.sleep(0.1)
+    assert (runs / ".aggloRun.lock").is_file()
+    os.kill(proc.pid, signal.SIGTERM)
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, out + err
+    assert (tmp_path / "written").is_file()
+    assert not (runs / ".aggloRun.lock").exists()

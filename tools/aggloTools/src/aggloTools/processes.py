@@ -218,6 +218,8 @@ def _stop_now(*_):
                 time.sleep(0.05)
         except (ChildProcessError, ProcessLookupError):
             pass
+    # every process it started has ended: its run folders are free
+    runlock.release_all()
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(130)

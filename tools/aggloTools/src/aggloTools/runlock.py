@@ -114,6 +114,15 @@ def held(folder, what):
         lock.unlink(missing_ok=True)
 
 
+def release_all():
+    """Give back every lock this process holds, for a driver that ends
+    without leaving its `with held(...)` blocks (os._exit after an
+    interrupt, once every process it started has ended): the next call
+    finds the folder free instead of a stale lock to take over."""
+    while _held:
+        _held.pop().unlink(missing_ok=True)
+
+
 def register(pid):
     """Add a process this one started to every lock it holds, so that
     the lock stays live while that process runs."""
