@@ -67,14 +67,15 @@ def choice(value, valid, where):
     return value
 
 
-def read_settings(case, keys):
-    """The system/caseSettings of a run, every entry checked."""
+def read_settings(case, keys, more=None):
+    """The system/caseSettings of a run, every entry checked: one of
+    keys, or of more(settings) (the entries its own values make valid)."""
     f = Path(case) / "system" / "caseSettings"
     try:
         s = read_dict(f)
     except ValueError as e:
         raise SystemExit(str(e)) from None
-    check_keys(s, keys, str(f))
+    check_keys(s, set(keys) | set(more(s) if more else ()), str(f))
     return s
 
 

@@ -2,8 +2,9 @@
 A.11).
 
     channel.case.particles release CASE
-                        the particles of the case's configuration at its
-                        latest time: seeded uniform random non-overlapping
+                        the particles of the case's configuration (of
+                        each of a group's, the same) at its latest
+                        time: seeded uniform random non-overlapping
                         positions at least d/2 from the walls, the local
                         fluid velocity, no spin, ids 0..N-1; into the
                         processor folders of a decomposed case (no
@@ -12,8 +13,9 @@ A.11).
                         the seeded pairs of the smoke preset at the latest
                         time
 
-The driver (channelRuns.py) calls branch_clouds directly: the released
-cloud becomes one cloud per agglomeration model."""
+The driver (channel.case.runs) calls branch_clouds directly: the released
+cloud becomes one cloud per agglomeration model (in a group of
+configurations, each configuration's cloud one per model: groups)."""
 
 import argparse
 import re
@@ -24,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from channel.case import settings
+from channel.case import groups, settings
 from aggloTools import cloud, fields, placement, times
 
 
@@ -94,8 +96,12 @@ def release(case, time=None):
     the cell whose centre is nearest along each axis."""
     case = Path(case)
     s = settings.read_settings(case)
-    p = settings.preset(s["preset"], s["configuration"])
-    c = settings.configuration(s["configuration"])
+    config = str(s["configuration"])
+    # a group's configurations share their particles (groups.check): the
+    # same particles in each one's cloud
+    p = settings.preset(s["preset"], groups.lead(config))
+    c = settings.configuration(groups.lead(config))
+    names = groups.clouds(config, "release", ())
     if time is None:
         time = times.time_dirs(case)[-1].name
     C = settings.cell_centres(case, time)
@@ -112,8 +118,9 @@ def release(case, time=None):
     procs = sorted(case.glob("processor[0-9]*"),
                    key=lambda d: int(d.name[9:]))
     if not procs:
-        cloud.write_cloud(case, x, dp, p["rhoParticle"], U=Up,
-                           cloud="particles", time=time)
+        for name in names:
+            cloud.write_cloud(case, x, dp, p["rhoParticle"], U=Up,
+                               cloud=name, time=time)
     else:
         owner = np.empty(len(C), np.int64)
         for rank, d in enumerate(procs):
@@ -123,48 +130,56 @@ def release(case, time=None):
         rank = owner[containing_cell(mesh_lines(case), x)]
         for r, d in enumerate(procs):
             mine = np.nonzero(rank == r)[0]
-            cloud.write_cloud(d, x[mine], dp, p["rhoParticle"], U=Up[mine],
-                               cloud="particles", time=time, ids=mine,
-                               count=N, totals=(N, N, len(procs)))
+            for name in names:
+                cloud.write_cloud(d, x[mine], dp, p["rhoParticle"],
+                                   U=Up[mine], cloud=name, time=time,
+                                   ids=mine, count=N,
+                                   totals=(N, N, len(procs)))
     t2 = time_module.time()
     where = f" into {len(procs)} processor folders" if procs else ""
-    print(f"released {N} particles of {dp * 1e6:g} um at t = {time}{where}"
+    each = f" (each of the clouds {' '.join(names)})" if len(names) > 1 \
+        else ""
+    print(f"released {N} particles{each} of {dp * 1e6:g} um at t = "
+          f"{time}{where}"
           f" (seed {int(p['seed']) + 1000}): placed in {t1 - t0:.1f} s,"
           f" written in {t2 - t1:.1f} s")
 
 
 # ------------------------------------------------------------- branching
 
-def branch_clouds(case, time, models):
-    """Agglomeration branch: the released cloud `particles` of the time
-    (in the case and in each processor folder) becomes one cloud per
-    model with the same particles, cloudProperties, record of the
-    particles (hardSphereCloudState) and source fields; the statistics
-    state is not copied (the counters start from zero)."""
+def branch_clouds(case, time, branches):
+    """Agglomeration branch: each released cloud of the time (in the case
+    and in each processor folder) becomes the clouds that branches (cloud
+    -> the released cloud it starts from: groups.branches) name, with
+    the same particles, cloudProperties, record of the particles
+    (hardSphereCloudState) and source fields; the statistics state is not
+    copied (the counters start from zero)."""
     case = Path(case)
+    made = list(branches)
     for r in [case / time] + sorted(case.glob(f"processor*/{time}")):
-        src = r / "lagrangian/particles"
-        if not src.is_dir():
-            continue
-        sources = sorted(r.glob("particles:*"))
-        for m in models:
-            shutil.copytree(src, r / "lagrangian" / m)
-            (r / "uniform/lagrangian" / m).mkdir(parents=True)
-            for f in ("cloudProperties", cloud.RECORD):
-                shutil.copy(r / "uniform/lagrangian/particles" / f,
-                            r / "uniform/lagrangian" / m)
-            # the record names the clouds of the case: now the models'
-            rec = r / "uniform/lagrangian" / m / cloud.RECORD
-            rec.write_text(re.sub(
-                r"clouds\s+\d+\s*\([^)]*\);",
-                f"clouds {len(models)} ( {' '.join(models)} );",
-                rec.read_text()))
+        for name in sorted(set(branches.values())):
+            src = r / "lagrangian" / name
+            if not src.is_dir():
+                continue
+            sources = sorted(r.glob(f"{name}:*"))
+            for m in (m for m in made if branches[m] == name):
+                shutil.copytree(src, r / "lagrangian" / m)
+                (r / "uniform/lagrangian" / m).mkdir(parents=True)
+                for f in ("cloudProperties", cloud.RECORD):
+                    shutil.copy(r / "uniform/lagrangian" / name / f,
+                                r / "uniform/lagrangian" / m)
+                # the record names the clouds of the case: now these
+                rec = r / "uniform/lagrangian" / m / cloud.RECORD
+                rec.write_text(re.sub(
+                    r"clouds\s+\d+\s*\([^)]*\);",
+                    f"clouds {len(made)} ( {' '.join(made)} );",
+                    rec.read_text()))
+                for f in sources:
+                    shutil.copy(f, r / f"{m}:{f.name.split(':', 1)[1]}")
+            shutil.rmtree(src)
+            shutil.rmtree(r / "uniform/lagrangian" / name)
             for f in sources:
-                shutil.copy(f, r / f"{m}:{f.name.split(':', 1)[1]}")
-        shutil.rmtree(src)
-        shutil.rmtree(r / "uniform/lagrangian/particles")
-        for f in sources:
-            f.unlink()
+                f.unlink()
 
 
 # ------------------------------------------------------------ seeded pairs
@@ -181,14 +196,15 @@ def seed_pairs(case, clouds):
     rewritten with the legacy positions file (located on reading)."""
     case = Path(case)
     s = settings.read_settings(case)
-    p = settings.preset(s["preset"], s["configuration"])
+    lead = groups.lead(str(s["configuration"]))
+    p = settings.preset(s["preset"], lead)
     n_pairs = int(p.get("seededPairs", 0))
     if not n_pairs:
         return
     time = times.time_dirs(case)[-1].name
     grid = Grid(settings.cell_centres(case, time), p["n"])
     Uf = fields.read_internal(case / time / "U")
-    dp = float(settings.configuration(s["configuration"])["d"])
+    dp = float(settings.configuration(lead)["d"])
     Lx, Ly, Lz = p["L"]
     d = p["delta"]
     rng = np.random.default_rng(int(p["seed"]) + 2000)

@@ -10,7 +10,11 @@ four-way coupled 12/4 um quartz particles (doc/cases.md Part A).
             medium, paper, and the regime study's variants; README.md
             says what each resolves, 'Run times' what each costs
   -configs  (default C1) configurations of the presets file:
-            C1 C2 C3 C4 (Table D.6) R80 R60 (restitution variation)
+            C1 C2 C3 C4 (Table D.6) R80 R60 (restitution variation);
+            one-way configurations joined with '+' (R80+R60) run as
+            clouds of one LES (channel.case.groups): the fluid solved
+            once for all of them, each its own clouds (runs/<preset>/
+            R80+R60/, clouds R80 R60, then R80EAM R80MAM R60EAM R60MAM)
   -matrix   all of them: C1 C2 C3 C4 R80 R60, EAM and MAM each
   -np       MPI ranks of every solver run (default 1: serial); a stage
             finished on another number of ranks is kept as it is
@@ -57,8 +61,7 @@ from aggloTools import progress as prog, runtimes, stages, times
 from aggloTools.runner import CommandError, package_command
 
 from channel import TUTORIAL
-from channel.case import settings
-from channel.case import particles
+from channel.case import groups, particles, settings
 
 MATRIX = "C1 C2 C3 C4 R80 R60"
 
@@ -109,6 +112,10 @@ class Channel:
         (d / "system" / "caseSettings").write_text(
             settings.settings(self.a.preset, config, stage, tuple(models),
                              self.a.np))
+        # a group's clouds: their cloud properties (each configuration's
+        # collision coefficients)
+        groups.properties(d, config, stage, models or settings.preset(
+            self.a.preset)["models"])
 
     def python(self, d, suffix, module, *args):
         """python -m module args in the case d, logged (log.python.*)."""
@@ -209,7 +216,8 @@ class Channel:
 
         p = settings.preset(self.a.preset)
         seeded = p["seededPairs"]
-        two_way = bool(settings.configuration(c)["twoWay"])
+        # a group's configurations are one-way (groups.members)
+        two_way = bool(settings.configuration(groups.lead(c))["twoWay"])
         # two-way coupled: one run per model (each model's cloud moves the
         # fluid its own way); one-way: the models' clouds in one run
         for models in (tuple((m,) for m in p["models"]) if two_way
@@ -223,13 +231,15 @@ class Channel:
                                        extra_constant=Path("constant"))
                 # Each model's cloud starts from the same end-of-dispersion
                 # state; the counters (statistics state) start from zero
-                particles.branch_clouds(adir, t, models)
+                particles.branch_clouds(adir, t,
+                                        groups.branches(c, models))
                 sys.stdout.flush()
                 stages.run_logged(["postProcess", "-func",
                                    "writeCellCentres", "-time", t], adir,
                                   "log.postProcess")
                 self.python(adir, "seedPairs", "channel.case.particles",
-                            "seedPairs", ".", *models)
+                            "seedPairs", ".",
+                            *groups.clouds(c, "agglomeration", models))
                 (adir / "branched").touch()
             self.stage(adir, "agglomeration", c, models)
             self.vtk(adir)

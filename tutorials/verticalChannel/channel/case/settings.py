@@ -3,7 +3,9 @@
 
     channel.case settings [-np N] PRESET CONFIG STAGE [MODEL ...]
                                   caseSettings of one stage (stdout) for
-                                  N MPI ranks (default 1)
+                                  N MPI ranks (default 1); CONFIG may be
+                                  a group of one-way configurations
+                                  (R80+R60: channel.case.groups)
     channel.case init CASE          initial flow: mean profile plus seeded
                                   divergence-free perturbations (at time 0)
 
@@ -32,6 +34,7 @@ import numpy as np
 
 from aggloTools import casesettings, fields
 from channel import TUTORIAL
+from channel.case import groups
 from channel.case.breakup import breakup_entry
 # the presets' reader (its own module); the other modules reach it here
 from channel.case.presets import (MODELS, PI, configuration,  # noqa: F401
@@ -75,8 +78,27 @@ def end_time(p, stage):
     return steps(p, stage) * p["deltaT"]
 
 
+def collision(c):
+    """The caseSettings values of a configuration c that are its clouds'
+    own in a group (groups.OWN): e_n,p and the wall, as text."""
+    if c["wall"] == "rough":
+        wall = ("wallModel sandgrain; sandgrainCoeffs { en 0.9; et 0.3;"
+                " muSt 0.5; muKin 0.4; Rz 10e-6; CSurface 3; }")
+    else:
+        wall = (f"wallModel smooth; smoothCoeffs {{ en {c['en']}; et 0.44;"
+                " muSt 0.94; muKin 0.092; }")
+    return {"enParticle": str(c["en"]), "wallType": c["wall"],
+            "wallCoeffs": f"{{ {wall} }}"}
+
+
 def settings(pname, cname, stage, models=(), nprocs=1):
-    p, c = preset(pname, cname), configuration(cname)
+    """The caseSettings of one stage of a configuration, or of a group
+    of one-way configurations run as clouds of one LES (groups)."""
+    group = groups.is_group(cname)
+    if group:
+        groups.check(pname, cname)
+    p = preset(pname, groups.lead(cname))
+    c = configuration(groups.lead(cname))
     casesettings.choice(stage, STAGES, "channel.case: stage")
     for m in models:
         casesettings.choice(m, MODELS, "channel.case: model")
@@ -86,21 +108,25 @@ def settings(pname, cname, stage, models=(), nprocs=1):
         if c["twoWay"] and len(models) != 1:
             sys.exit("channel.case: a two-way coupled configuration runs one"
                      " agglomeration model per run")
-        clouds = "(" + " ".join(models) + ")"
-    elif stage == "unladen":
-        clouds = "()"
-    else:
-        clouds = "(particles)"
+    clouds = "(" + " ".join(groups.clouds(cname, stage, models)) + ")"
     on = c["twoWay"]
     forces = ("SchillerNaumannDrag; SaffmanMeiLiftForce { U U; }"
               " rotationLift { model OesterleBuiDinh; } gravity;"
               if on else "SchillerNaumannDrag; gravity;")
-    if c["wall"] == "rough":
-        wall = ("wallModel sandgrain; sandgrainCoeffs { en 0.9; et 0.3;"
-                " muSt 0.5; muKin 0.4; Rz 10e-6; CSurface 3; }")
+    clouds_comment = (
+        "// Clouds of this stage: none (unladen), particles (release, "
+        "dispersion:\n// no agglomeration), then one cloud per "
+        "agglomeration model")
+    if group:
+        clouds_comment = (
+            "// Clouds of this stage: one per configuration of the group "
+            "(release,\n// dispersion), one per configuration and model "
+            "(agglomeration)")
+        own = groups.entries(
+            cname, lambda m: collision(configuration(m)))
     else:
-        wall = (f"wallModel smooth; smoothCoeffs {{ en {c['en']}; et 0.44;"
-                " muSt 0.94; muKin 0.092; }")
+        own = "\n".join(f"{k:<15} {v}" + ("" if v.startswith("{") else ";")
+                        for k, v in collision(c).items())
     Lx, Ly, Lz = p["L"]
     nx, ny, nz = p["n"]
     write_steps = max(1, int(round(p["writeStar"] / p["dtStar"])))
@@ -164,13 +190,10 @@ coupled         {'true' if on else 'false'};
 couplingScale   {p['couplingScale'] if on else 1};
 cloudForces     {{ {forces} }}
 dispersionModel {'PozorskiApte' if on else 'none'};
-enParticle      {c['en']};
-wallType        {c['wall']};
-wallCoeffs      {{ {wall} }}
+{own}
 profileBins     {p['profileBins']};
 
-// Clouds of this stage: none (unladen), particles (release, dispersion:
-// no agglomeration), then one cloud per agglomeration model
+{clouds_comment}
 clouds          {clouds};
 
 // The collision-event log of the agglomeration stage (doc/eventLog.md)
@@ -198,8 +221,11 @@ SETTINGS_KEYS = {"preset", "configuration", "stage", "Lx", "Ly", "Lz", "nx",
 
 
 def read_settings(case):
-    """The caseSettings of a stage, every entry checked."""
-    return casesettings.read_settings(case, SETTINGS_KEYS)
+    """The caseSettings of a stage, every entry checked (a group's
+    members' entries too: groups)."""
+    return casesettings.read_settings(
+        case, SETTINGS_KEYS,
+        lambda s: groups.own_entries(str(s.get("configuration", ""))))
 
 
 def cell_centres(case, time="0"):
@@ -256,7 +282,8 @@ def main(argv):
     st.add_argument("-np", type=int, default=1,
                     help="MPI ranks of the stage (default 1)")
     st.add_argument("preset", help="a preset of the presets file")
-    st.add_argument("config", help="a configuration (C1 ... R60)")
+    st.add_argument("config", help="a configuration (C1 ... R60), or "
+                    "one-way ones joined with '+' (R80+R60: groups)")
     st.add_argument("stage", choices=STAGES, help="the stage")
     st.add_argument("models", nargs="*", help="the agglomeration stage's "
                     "clouds (EAM, MAM)")

@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from channel import TUTORIAL
-from channel.case import settings
+from channel.case import groups, settings
 from channel.post import contacts
 from aggloTools.stats import read_stats
 from aggloTools.uncertainty import window_rate
@@ -53,7 +53,13 @@ def run_dirs(pname, base=None):
                        else [s["clouds"]])]
             for m in clouds:
                 if m:
-                    out[(cdir.name, m)] = (adir, m)
+                    # a group's clouds are its configurations' (groups)
+                    k = groups.cloud_key(cdir.name, m)
+                    if k in out:
+                        sys.exit(f"channel.post: {k[0]} {k[1]} ran twice,"
+                                 f" in {out[k][0]} and in {adir}: remove "
+                                 "one of them")
+                    out[k] = (adir, m)
     return out
 
 

@@ -1,0 +1,180 @@
+"""verticalChannel: one-way coupled configurations run as clouds of one
+LES, a group named by its configurations joined with '+' (R80+R60).
+
+Where the particles do not act on the fluid (one-way coupling: the
+configurations whose sub-models are off), the fluid of every such
+configuration is the same LES: the unladen LES continued with the same
+step, whatever its particles do. So a group's configurations run in one
+case, each with clouds of its own that see that LES and nothing of the
+others' particles: the release and dispersion stages one cloud per
+configuration (named after it), the agglomeration stage one per
+configuration and model (R80EAM R80MAM R60EAM R60MAM). The fluid is
+solved once instead of once per configuration.
+
+A group's configurations must agree in everything their runs' caseSettings
+hold but the collision coefficients (e_n,p and the wall): the particles'
+diameter and number, the sub-models (so the forces and the dispersion),
+the coupling's scale. Each cloud takes its configuration's coefficients
+from caseSettings, where a group writes one entry per configuration,
+
+    R80 { enParticle 0.8; wallType smooth; wallCoeffs { ... } }
+
+expanded by the cloud's constant/<cloud>Properties (written by the
+driver, properties()) before the common cloud set-up:
+
+    #include "$FOAM_CASE/system/caseSettings"
+    $R80;
+    cloudAgglomerationModel EAM;
+    #include "cloudCommon"
+
+(the group's caseSettings has no enParticle, wallType or wallCoeffs of
+its own, so cloudCommon's #include of it leaves each cloud's).
+
+    members("R80+R60")                          -> ["R80", "R60"]
+    clouds("R80+R60", "agglomeration", ("EAM", "MAM"))
+        -> ["R80EAM", "R80MAM", "R60EAM", "R60MAM"]
+    check("regime64", "R80+R60")    # stops naming what differs
+"""
+
+import sys
+from pathlib import Path
+
+from aggloTools.foamfile import write_foamfile
+
+from channel.case.presets import (MODELS, PER_CONFIGURATION_KEYS,
+                                  configuration, preset)
+
+SEP = "+"
+#: The entries of a configuration that a group's members must share (the
+#: wall and e_n,p are each cloud's own)
+SHARED = ("d", "subModels")
+#: The caseSettings entries that are each member's own (its entry)
+OWN = ("enParticle", "wallType", "wallCoeffs")
+
+
+def is_group(name):
+    return SEP in name
+
+
+def members(name):
+    """The configurations of a group (a configuration alone: [name]),
+    each a configuration of the presets file, one-way coupled, at least
+    two, none twice."""
+    if not is_group(name):
+        return [name]
+    ms = name.split(SEP)
+    where = f"channel.case: configuration group '{name}'"
+    if len(ms) < 2 or "" in ms:
+        sys.exit(f"{where}: name two configurations or more, joined with "
+                 f"'{SEP}' (e.g. R80{SEP}R60)")
+    twice = sorted({m for m in ms if ms.count(m) > 1})
+    if twice:
+        sys.exit(f"{where}: {' '.join(twice)} named twice")
+    for m in ms:
+        if configuration(m)["twoWay"]:
+            sys.exit(f"{where}: {m} is two-way coupled (subModels on): its "
+                     "particles move the fluid, so it cannot share an LES; "
+                     "a group's configurations must be one-way (subModels "
+                     "off)")
+    return ms
+
+
+def lead(name):
+    """The configuration whose shared settings stand for the group's."""
+    return members(name)[0]
+
+
+def check(pname, name):
+    """Stop unless the group's configurations agree, in the preset pname,
+    in everything but their collision coefficients (SHARED, and the
+    preset's perConfiguration entries)."""
+    ms = members(name)
+    c0, p0 = configuration(ms[0]), preset(pname, ms[0])
+    for m in ms[1:]:
+        c, p = configuration(m), preset(pname, m)
+        differ = ([k for k in SHARED if c[k] != c0[k]]
+                  + [k for k in PER_CONFIGURATION_KEYS if p[k] != p0[k]])
+        if differ:
+            sys.exit(f"channel.case: configuration group '{name}' in preset "
+                     f"{pname}: {ms[0]} and {m} differ in "
+                     f"{' '.join(differ)}; a group's configurations may "
+                     "differ only in their collision coefficients (en, "
+                     "wall)")
+
+
+def clouds(name, stage, models):
+    """The clouds of a stage: none (unladen); `particles` (release,
+    dispersion) and one per model (agglomeration) for a configuration
+    alone; one per configuration, then one per configuration and model,
+    for a group."""
+    if stage == "unladen":
+        return []
+    if not is_group(name):
+        return ["particles"] if stage != "agglomeration" else list(models)
+    ms = members(name)
+    if stage != "agglomeration":
+        return ms
+    return [m + model for m in ms for model in models]
+
+
+def branches(name, models):
+    """Each agglomeration cloud -> the dispersion cloud it starts from."""
+    if not is_group(name):
+        return {model: "particles" for model in models}
+    return {m + model: m for m in members(name) for model in models}
+
+
+def cloud_key(name, cloud):
+    """(configuration, model) of an agglomeration cloud of the run of
+    name (a configuration or a group)."""
+    if not is_group(name):
+        return (name, cloud)
+    for m in members(name):
+        if cloud.startswith(m) and cloud[len(m):] in MODELS:
+            return (m, cloud[len(m):])
+    raise KeyError(f"{cloud}: not an agglomeration cloud of the "
+                   f"configuration group {name}")
+
+
+def entries(name, own):
+    """The group's caseSettings lines: its members and each member's
+    entry of its own values (own(configuration): OWN -> text)."""
+    ms = members(name)
+    return "\n".join([f"members         ({' '.join(ms)});"] + [
+        f"{m:<15} {{ " + " ".join(
+            f"{k} {v}" + ("" if v.startswith("{") else ";")
+            for k, v in own(m).items()) + " }" for m in ms])
+
+
+def own_entries(name):
+    """The caseSettings entries a group adds (none for a configuration
+    alone): its members and one entry per member."""
+    return ["members"] + members(name) if is_group(name) else []
+
+
+def properties(case, name, stage, models):
+    """constant/<cloud>Properties of each cloud of a group's stage (none
+    for a configuration alone: the tutorial's own files serve)."""
+    if not is_group(name):
+        return
+    ms = members(name)
+    if stage == "agglomeration":
+        made = [(m + model, m, model) for m in ms for model in models]
+    else:
+        made = [(m, m, "none") for m in ms]
+    for cloud, m, model in made:
+        write_foamfile(
+            Path(case) / "constant" / f"{cloud}Properties", "dictionary",
+            "constant", f"{cloud}Properties", f"""\
+// Cloud "{cloud}" of the configuration group {name}
+// (channel.case.groups, written by ./Allrun): configuration {m}'s
+// collision coefficients (its entry of caseSettings), agglomeration
+// model {model}
+
+#include "$FOAM_CASE/system/caseSettings"
+
+${m};
+
+cloudAgglomerationModel {model};
+
+#include "cloudCommon\"""")
