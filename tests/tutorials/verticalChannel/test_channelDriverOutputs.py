@@ -20,6 +20,8 @@ import subprocess
 
 import pytest
 
+from aggloTools.foamfile import entry_text
+
 from aggloTools.runner import project_dir
 
 TUT = project_dir() / "tutorials" / "verticalChannel"
@@ -106,14 +108,20 @@ def test_python_driver_writes_what_the_shell_driver_wrote(tmp_path,
     # nor the break-up entry that cloudCommon merges
     common = tuts["old"] / "constant" / "cloudCommon"
     common.write_bytes(text_without(common, tuts["old"]))
-    # The old channel.py knows no UTolerance and no breakup entry: the
-    # presets without them (smoke's UTolerance is the common 1e-6,
-    # fvSolution's default for a caseSettings without it; its break-up
-    # none)
+    # The old channel.py checks every preset of the file and knows none
+    # of the entries added since (UTolerance, breakup, models,
+    # stagesFrom, perConfiguration): its presets file holds the sections
+    # it runs (common, smoke, configurations) without the UTolerance and
+    # breakup lines (smoke's UTolerance is the common 1e-6, fvSolution's
+    # default for a caseSettings without it; its break-up none)
     presets = tuts["old"] / "presets"
-    presets.write_text("".join(
-        ln for ln in presets.read_text().splitlines(keepends=True)
-        if not ln.strip().startswith(("UTolerance", "breakup"))))
+    text = presets.read_text()
+    kept = text[:text.index("FoamFile")]
+    for name in ("FoamFile", "common", "smoke", "configurations"):
+        lines = [ln for ln in entry_text(text, name).splitlines()
+                 if not ln.strip().startswith(("UTolerance", "breakup"))]
+        kept += name + "\n{\n" + "\n".join(lines) + "\n}\n\n"
+    presets.write_text(kept)
     for t in tuts.values():
         res = allrun(t, "-np", np_)
         assert res.returncode == 0, res.stdout[-2000:] + res.stderr
