@@ -3,10 +3,12 @@ where the preset has no C1 run of its own, C1's rows are the study's
 committed numbers (results/regime/regime.json) for that preset; a record
 made with other settings than the preset's is refused naming them; the
 preset's own C1 run comes first; the committed record of regime64 gives
-the study's published C1 (README.md, 'The study's result')."""
+the study's published C1 (README.md, 'The study's result'); an own C1 run
+is compared with the record (identical, within 2 sigma, or a FAIL)."""
 
 import copy
 import json
+import math
 
 import pytest
 
@@ -90,3 +92,62 @@ def test_record_of_other_settings_refused(mods, tmp_path, key, value,
     # the unchanged record is taken
     path.write_text(json.dumps({"variants": [record(study)]}))
     assert len(study.study_runs(channel.preset("regime64"), {}, path)) == 2
+
+
+def own_runs(study, channel, shift_sigmas=0.0):
+    """C1's own runs made from the record (as a rerun of the study would
+    give them), f_col x s^2 of EAM moved by shift_sigmas of the combined
+    sigma."""
+    p = channel.preset("regime64")
+    res = {k: dict(r) for k, r in study.study_runs(p, {}).items()}
+    for r in res.values():
+        del r["fromStudy"]
+    r = res[("C1", "EAM")]
+    s = math.hypot(r["sigma_col"] * r["scale"],
+                   record(study)["result"]["models"]["EAM"]
+                   ["sigma_col_scaled"])
+    r["f_col_scaled"] += shift_sigmas * s
+    return p, res
+
+
+@pytest.mark.parametrize("shift, status, said", [
+    (0.0, "PASS", "identical: the record repeated"),
+    (1.5, "PASS", "z +1.50 (within 2 sigma: the same statistics"),
+    (-2.5, "FAIL", "z -2.50: the physics or the settings changed"),
+])
+def test_own_run_against_the_record(mods, shift, status, said):
+    """A preset's own C1 run is compared with the study's record of it:
+    identical, within 2 sigma, or beyond (a FAIL); f_agg and MAM, left as
+    the record, are identical."""
+    study, reg, channel = mods
+    p, res = own_runs(study, channel, shift)
+    rows = {r["quantity"]: r for r in
+            study.record_rows(reg.R, p, res)}
+    assert len(rows) == 4
+    col = rows["C1 EAM f_col x s^2: own run / the study's record"]
+    assert col["status"] == status and said in col["note"], col
+    v = record(study)["result"]["models"]["EAM"]
+    assert col["sim"] == pytest.approx(
+        (v["f_col_scaled"] + shift * math.hypot(
+            v["sigma_col_scaled"], v["sigma_col_scaled"]))
+        / v["f_col_scaled"], rel=1e-12)
+    for m, q in (("EAM", "agg"), ("MAM", "col"), ("MAM", "agg")):
+        r = rows[f"C1 {m} f_{q} x s^2: own run / the study's record"]
+        assert r["status"] == "PASS" and r["sim"] == 1.0
+
+
+def test_no_comparison_without_both(mods, tmp_path):
+    """No own C1 run, or no record of the preset: no rows; a record made
+    with other settings: n/r, naming them."""
+    study, reg, channel = mods
+    p, res = own_runs(study, channel)
+    assert study.record_rows(reg.R, p, study.study_runs(p, {})) == []
+    assert study.record_rows(reg.R, channel.preset("smoke"), res) == []
+    v = record(study)
+    v["result"]["dtStar"] = 0.02
+    path = tmp_path / "regime.json"
+    path.write_text(json.dumps({"variants": [v]}))
+    rows = study.record_rows(reg.R, p, res, path)
+    assert len(rows) == 4
+    assert all(r["status"] == "n/r" and "other dtStar: not comparable"
+               in r["note"] for r in rows)

@@ -31,7 +31,7 @@ from channel.plots.profiles import picture, plots  # noqa: F401
 from channel.post.gridCheck import GRID_CHECK, grid_rows
 from channel.post.regression import R, regression
 from channel.post.report import compare, write_regression
-from channel.post.studyRuns import study_runs
+from channel.post.studyRuns import record_rows, study_runs
 
 
 # ------------------------------------------------------------------ runs
@@ -210,6 +210,8 @@ def post(pname, reference=False):
             fluid[f"{k[0]} agglomeration (the regime study's)"] = {
                 "uTauByUb": r["uTau"] / p["Ubar"], "gradient": None}
     rows = regression(p, res)
+    # C1's own run against the study's record of it, where both exist
+    rows += record_rows(R, p, res)
     if pname in GRID_CHECK:
         # the judged ratios at the coarser grid too (gridCheck)
         rows += grid_rows(R, res, grid_results(GRID_CHECK[pname]))

@@ -10,13 +10,21 @@ conservation check (done in the study's run), no binomial sigma of the
 cumulative alpha at the end (its collision count is not recorded).
 
     res.update(study_runs(p, res))      # C1 of the study, where missing
+    rows += record_rows(R, p, res)      # C1's own run against the record
+
+Where the preset has a C1 run of its own and the study a record of it
+made with the same settings, the report compares the two (record_rows):
+the same physics and settings repeat the study's numbers (a one-way
+cloud's run is deterministic, and so is the LES it sees).
 """
 
 import json
+import math
 
 from channel import TUTORIAL
 from channel.case import settings
 from channel.post import contacts
+from aggloTools import regression as reg
 from aggloTools import uncertainty
 
 #: The study's committed record
@@ -102,3 +110,50 @@ def study_runs(p, have, path=STUDY):
             " the preset")
     return {("C1", m): from_study(pc, variant, m) for m in missing
             if m in variant["result"]["models"]}
+
+
+def record_rows(R, p, res, path=STUDY):
+    """Rows comparing the preset's own C1 runs in res with the study's
+    record of the preset (f_col x s^2, f_agg x s^2, per model): PASS
+    where they agree within 2 sigma (identical, or the note gives z),
+    FAIL beyond; n/r where the record was made with other settings than
+    the preset has now (not comparable); no rows without an own C1 run
+    or a record."""
+    own = {m: res[("C1", m)] for m in MODELS if ("C1", m) in res
+           and not res[("C1", m)].get("fromStudy")}
+    variant = study_record(p["name"], path) if own else None
+    if variant is None:
+        return []
+    differ = same_settings(settings.preset(p["name"], "C1"),
+                           variant["result"])
+    rows = []
+    for m, r in sorted(own.items()):
+        x = variant["result"]["models"].get(m)
+        if x is None:
+            continue
+        for q in ("col", "agg"):
+            name = f"C1 {m} f_{q} x s^2: own run / the study's record"
+            if differ:
+                rows.append(R(name, None, None, None, None, reg.NR,
+                              "the record was made with other "
+                              f"{' '.join(differ)}: not comparable"))
+                continue
+            a, b = r[f"f_{q}_scaled"], x[f"f_{q}_scaled"]
+            sa = r[f"sigma_{q}"] * r["scale"]
+            sb = x[f"sigma_{q}_scaled"]
+            s = math.hypot(sa, sb)
+            if a == b:
+                status, note = reg.PASS, "identical: the record repeated"
+            else:
+                z = (a - b) / s if s > 0 else math.inf
+                status = reg.status(abs(z) <= 2)
+                note = (f"{a:.6g} against {b:.6g}, z {z:+.2f} (within 2 "
+                        "sigma: the same statistics, not the same run)"
+                        if abs(z) <= 2 else f"{a:.6g} against {b:.6g}, "
+                        f"z {z:+.2f}: the physics or the settings changed"
+                        " since the record was made")
+            ratio = a / b if b else None
+            sr = (ratio * math.hypot(sa / a if a else 0, sb / b)
+                  if ratio is not None else None)
+            rows.append(R(name, ratio, sr, None, None, status, note))
+    return rows
