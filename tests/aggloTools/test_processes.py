@@ -4,7 +4,7 @@ driver stops its whole process tree and exits 130 without running what
 follows, its solvers (in sessions of their own) first asked to write
 (SIGUSR2, their stopAtWriteNowSignal), a second SIGINT at once; a stop
 on SIGUSR2 that the driver did not ask for is not taken for the end of
-the run."""
+the run; a niced driver gives its solvers' sessions its niceness."""
 
 import os
 import signal
@@ -12,6 +12,7 @@ import subprocess
 import sys
 import textwrap
 import time
+from pathlib import Path
 
 import pytest
 
@@ -115,7 +116,7 @@ FAKE_SOLVER = textwrap.dedent("""
 """)
 
 
-def _driver(tmp_path, *solver_args):
+def _driver(tmp_path, *solver_args, prefix=()):
     (tmp_path / "solver.py").write_text(FAKE_SOLVER)
     driver = tmp_path / "driver.py"
     driver.write_text(textwrap.dedent(f"""
@@ -129,7 +130,7 @@ def _driver(tmp_path, *solver_args):
             return 0
         sys.exit(processes.interruptible(main))
     """))
-    proc = subprocess.Popen([sys.executable, str(driver)],
+    proc = subprocess.Popen([*prefix, sys.executable, str(driver)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             text=True, start_new_session=True)
     pid = tmp_path / "solver.pid"
@@ -154,6 +155,39 @@ def test_interrupt_asks_the_solver_to_write(tmp_path):
     assert not (tmp_path / "done").exists()
     log = (tmp_path / "log.aggloPimpleFoam").read_text()
     assert log.endswith("iteration\nEnd\n")
+
+
+def autogroup_nice(pid):
+    """The nice of the process's session group, as the kernel keeps it
+    ('/autogroup-N nice K')."""
+    return int(Path(f"/proc/{pid}/autogroup").read_text().split()[-1])
+
+
+@pytest.mark.parametrize("niceness", [0, 7])
+def test_the_solvers_session_gets_the_drivers_niceness(tmp_path,
+                                                       niceness):
+    """`nice -n 7 ./Allrun`: the solver, in a session of its own, gets a
+    session group of its own where the kernel groups by session, whose
+    nice the kernel makes 0 (an equal share beside every other session,
+    whatever the driver's niceness); the driver sets it to its own, 7.
+    Not niced: it stays 0."""
+    if not Path("/proc/self/autogroup").exists():
+        pytest.skip("n/r: this kernel groups no processes by session (no "
+                    "/proc/<pid>/autogroup)")
+    proc, solver = _driver(tmp_path, prefix=("nice", "-n", str(niceness)))
+    try:
+        assert os.getsid(solver) != os.getsid(proc.pid)
+        assert Path(f"/proc/{solver}/autogroup").read_text().split()[0] \
+            != Path(f"/proc/{proc.pid}/autogroup").read_text().split()[0]
+        assert os.getpriority(os.PRIO_PROCESS, solver) == niceness
+        t0 = time.time()
+        while autogroup_nice(solver) != niceness and time.time() - t0 < 5:
+            time.sleep(0.1)
+        assert autogroup_nice(solver) == niceness
+    finally:
+        os.killpg(proc.pid, signal.SIGINT)
+        proc.communicate(timeout=60)
+    assert proc.returncode == 130
 
 
 def test_second_interrupt_stops_at_once(tmp_path):

@@ -44,6 +44,24 @@ def _park():
         time.sleep(3600)
 
 
+def share_as_driver(pid):
+    """Give the session of process pid (a solver started in a session of
+    its own) the driver's niceness: where the kernel groups processes by
+    session (/proc/sys/kernel/sched_autogroup_enabled), nice weighs only
+    within a group and each group has a nice of its own, 0 when made, so
+    without this `nice ./Allrun` would leave its solvers an equal share
+    beside every other session's. Nothing where the driver is not niced
+    or the kernel has no such groups."""
+    n = os.nice(0)
+    if n <= 0:
+        return
+    try:
+        with open(f"/proc/{pid}/autogroup", "w") as f:
+            f.write(str(n))
+    except OSError:
+        pass
+
+
 @contextlib.contextmanager
 def _started(cmd, cwd, log, append, writes=False):
     """cmd started in cwd with its output in cwd/log (appended with
@@ -59,6 +77,8 @@ def _started(cmd, cwd, log, append, writes=False):
             [str(c) for c in cmd], cwd=cwd, stdout=out,
             stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
             env=dict(os.environ, PWD=str(cwd)), start_new_session=writes)
+        if writes:
+            share_as_driver(proc.pid)
         with _lock:
             _children.add(proc)
             if writes:
