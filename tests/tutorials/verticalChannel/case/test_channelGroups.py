@@ -148,6 +148,10 @@ def test_a_group_gives_each_configuration_run_alone(tmp_path):
              .splitlines() if ln.startswith(("R80 ", "R60 "))]
             for r in (ra, rg)]
     assert rows[0] == rows[1] and len(rows[0]) >= 16
+    # one fluid, reported once by its folder's name
+    text = (rg / "report" / "regression.txt").read_text()
+    assert text.count("fluid R80+R60 agglomeration: u_tau/U_B") == 1
+    assert "fluid R80 agglomeration" not in text
     # a configuration run both alone and in a group is refused by the
     # post, naming both
     shutil.copytree(rg / "R80+R60", ra / "R80+R60")

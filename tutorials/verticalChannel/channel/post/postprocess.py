@@ -202,8 +202,9 @@ def post(pname, reference=False):
         ut_k, G_k = u_tau(p, adir)
         if ut_k:
             res[k]["uTau"] = ut_k
-            fluid[f"{k[0]} {adir.name}"] = {"uTauByUb": ut_k / p["Ubar"],
-                                              "gradient": G_k}
+            # a group's runs share one fluid: named once, by its folder
+            fluid[f"{adir.parent.name} {adir.name}"] = {
+                "uTauByUb": ut_k / p["Ubar"], "gradient": G_k}
     for k, r in study.items():
         res[k] = r
         if r.get("uTau") and k[1] == p["models"][0]:
