@@ -15,7 +15,10 @@ four-way coupled 12/4 um quartz particles (doc/cases.md Part A).
             clouds of one LES (channel.case.groups): the fluid solved
             once for all of them, each its own clouds (runs/<preset>/
             R80+R60/, clouds R80 R60, then R80EAM R80MAM R60EAM R60MAM)
-  -matrix   all of them: C1 C2 C3 C4 R80 R60, EAM and MAM each
+  -matrix   all of them: C1 C2 C3 C4 R80 R60, EAM and MAM each (each
+            alone; -configs "C1+R80+R60 C2 C3 C4" is the same matrix
+            with the one-way ones in one LES: at regime64 about 84
+            CPU hours instead of 103, README.md)
   -np       MPI ranks of every solver run (default 1: serial); a stage
             finished on another number of ranks is kept as it is
   -post     only the post-processing of what has been run
