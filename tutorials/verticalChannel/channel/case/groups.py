@@ -140,10 +140,13 @@ def entries(name, own):
     """The group's caseSettings lines: its members and each member's
     entry of its own values (own(configuration): OWN -> text)."""
     ms = members(name)
-    return "\n".join([f"members         ({' '.join(ms)});"] + [
-        f"{m:<15} {{ " + " ".join(
-            f"{k} {v}" + ("" if v.startswith("{") else ";")
-            for k, v in own(m).items()) + " }" for m in ms])
+    lines = [f"members         ({' '.join(ms)});"]
+    for m in ms:
+        v = own(m)
+        lines.append(f"{m:<15} {{ " + " ".join(
+            f"{k} {v[k]}" + ("" if v[k].startswith("{") else ";")
+            for k in OWN) + " }")
+    return "\n".join(lines)
 
 
 def own_entries(name):
