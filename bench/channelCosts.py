@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
 """Measured costs of the verticalChannel presets: short
-runs of every stage of configuration C1, serially and on MPI ranks, with
+runs of every stage of configuration C1 (or of --config, e.g. a group of
+one-way configurations as clouds of one LES, C1+R80+R60: one cloud per
+configuration in laden1, one per configuration and model in laden2, the
+results under "<preset> <config>"), serially and on MPI ranks, with
 the same inputs, sizes and code paths as ./Allrun of the tutorial.
 
     source etc/bashrc
     .venv/bin/python bench/channelCosts.py [--presets "smoke small"]
         [--np "1 2"] [--steps N] [--decompose-timeout 600]
+        [--config C1+R80+R60]
 
 For each preset under bench/runs/channelCosts/<preset>/: blockMesh and the
 initial flow; then for each rank count n:
@@ -54,6 +58,7 @@ ROOT = project_dir()
 TUTORIAL = ROOT / "tutorials" / "verticalChannel"
 channel = tutorial_module("verticalChannel", "channel.case.settings")
 channelParticles = tutorial_module("verticalChannel", "channel.case.particles")
+channelGroups = tutorial_module("verticalChannel", "channel.case.groups")
 channelProfile = bench_module("channelProfile")
 
 OUT = ROOT / "bench" / "runs" / "channelCosts"
@@ -112,6 +117,10 @@ def run(cmd, cwd, log, name=None, timeout=None):
 
 #: Record a profile of the serial solver runs (--perf)
 PERF = {"on": False}
+#: The configuration measured (--config): C1, or a group of one-way
+#: configurations run as clouds of one LES (C1+R80+R60)
+CONFIG = {"name": "C1"}
+MODELS = ("EAM", "MAM")
 
 
 def solver(case, n, log=f"log.{APP}"):
@@ -126,7 +135,8 @@ def solver(case, n, log=f"log.{APP}"):
 def settings(case, pname, stage, steps, n, models=()):
     """caseSettings of the stage, ending `steps` steps after the latest
     time and writing at its end."""
-    text = channel.settings(pname, "C1", stage, models, n)
+    text = channel.settings(pname, CONFIG["name"], stage, models, n)
+    channelGroups.properties(case, CONFIG["name"], stage, MODELS)
     p = channel.preset(pname)
     t0 = float(times.time_dirs(case)[-1].name)
     text = re.sub(r"\nendTime\s+[^;]+;",
@@ -209,7 +219,8 @@ def stage(case, n, steps, N, clouds):
 def preset_costs(pname, nps, steps, dec_timeout):
     p = channel.preset(pname)
     N = int(p["nParticles"])
-    base = OUT / pname
+    base = OUT / (pname if CONFIG["name"] == "C1"
+                  else f"{pname}-{CONFIG['name']}")
     shutil.rmtree(base, ignore_errors=True)
     mesh = base / "mesh"
     mesh.mkdir(parents=True)
@@ -218,7 +229,7 @@ def preset_costs(pname, nps, steps, dec_timeout):
     shutil.copytree(TUTORIAL / "0.orig", mesh / "0")
     settings(mesh, pname, "unladen", steps, 1)
     out = {"preset": pname, "cells": p["n"][0] * p["n"][1] * p["n"][2],
-           "particles": N}
+           "particles": N, "config": CONFIG["name"]}
     out["blockMesh_s"] = run(["blockMesh"], mesh, "log.blockMesh")[0]
     run(["postProcess", "-func", "writeCellCentres", "-time", "0"], mesh,
         "log.postProcess")
@@ -253,14 +264,16 @@ def preset_costs(pname, nps, steps, dec_timeout):
         r["release_B"] = sum(disk(d / t / "lagrangian") for d in
                              [l1] + sorted(l1.glob("processor*"))
                              if (d / t / "lagrangian").is_dir())
-        r["laden1"] = stage(l1, n, steps, N, 1)
+        k = len(channelGroups.members(CONFIG["name"]))
+        r["laden1"] = stage(l1, n, steps, N, k)
         print(f"{pname} np{n} laden1: {r['laden1']['step_s']:.3g} s/step",
               flush=True)
         l2 = base / f"laden2_np{n}"
         t = branch(l1, l2, n)
-        channelParticles.branch_clouds(l2, t, ("EAM", "MAM"))
-        settings(l2, pname, "agglomeration", steps, n, ("EAM", "MAM"))
-        r["laden2"] = stage(l2, n, steps, N, 2)
+        channelParticles.branch_clouds(
+            l2, t, channelGroups.branches(CONFIG["name"], MODELS))
+        settings(l2, pname, "agglomeration", steps, n, MODELS)
+        r["laden2"] = stage(l2, n, steps, N, 2 * k)
         print(f"{pname} np{n} laden2: {r['laden2']['step_s']:.3g} s/step",
               flush=True)
     if 2 in nps:
@@ -301,6 +314,8 @@ def table(res):
             n = int(key[2:])
             s = r[key]
             l1, l2, un = s["laden1"], s["laden2"], s["unladen"]
+            group = ("" if r.get("config", "C1") == "C1"
+                     else f" {r['config']}")
             us = (f"{l1.get('tracking_us', 0):.2f} + "
                   f"{l1.get('stage_us', 0):.2f} + "
                   f"{l1.get('rest_us', 0):.2f}")
@@ -310,7 +325,8 @@ def table(res):
                             ("unladen", "laden1", "laden2"))
                    if "efficiency" in un else "-")
             lines.append(
-                f"| {r['preset']} | {r['cells']:,} | {r['particles']:,} |"
+                f"| {r['preset']}{group} | {r['cells']:,} |"
+                f" {r['particles']:,} |"
                 f" {n} | {un['step_s']:.3g} | {l1['step_s']:.3g} |"
                 f" {l2['step_s']:.3g} | {us} | {l1['first_step_s']:.3g} |"
                 f" {l2['peak_B'] / gb:.2f} | {per:.0f} |"
@@ -326,18 +342,25 @@ def main():
                     help="steps per run (default: smoke 60, small 40,"
                     " medium 12, paper 6: the CPU clock ticks 0.01 s)")
     ap.add_argument("--decompose-timeout", type=float, default=600)
+    ap.add_argument("--config", default="C1",
+                    help="the configuration (default C1), or one-way ones"
+                    " as clouds of one LES (C1+R80+R60): laden1 then has"
+                    " a cloud per configuration, laden2 one per"
+                    " configuration and model")
     ap.add_argument("--perf", action="store_true",
                     help="profile the serial runs (perf record) into"
                     " bench/results/channelProfile.md")
     a = ap.parse_args()
     PERF["on"] = a.perf
+    CONFIG["name"] = a.config
     nps = [int(x) for x in a.np.split()]
     OUT.mkdir(parents=True, exist_ok=True)
     jf = OUT / ("profile.json" if a.perf else "results.json")
     old = json.loads(jf.read_text()) if jf.exists() else {}
     for pname in a.presets.split():
         steps = a.steps or STEPS.get(pname, 6)
-        old[pname] = preset_costs(pname, nps, steps, a.decompose_timeout)
+        key = pname if a.config == "C1" else f"{pname} {a.config}"
+        old[key] = preset_costs(pname, nps, steps, a.decompose_timeout)
         jf.write_text(json.dumps(old, indent=1))
     print(table([old[k] for k in old]))
     print(f"\n(all figures: {jf})")
