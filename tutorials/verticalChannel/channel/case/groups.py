@@ -102,36 +102,41 @@ def check(pname, name):
                      "wall)")
 
 
-def clouds(name, stage, models):
-    """The clouds of a stage: none (unladen); `particles` (release,
+def _made(name, stage, models):
+    """(cloud, configuration, model) of each cloud of a stage: the one
+    place of the clouds' names. None (unladen); `particles` (release,
     dispersion) and one per model (agglomeration) for a configuration
-    alone; one per configuration, then one per configuration and model,
-    for a group."""
+    alone; one per configuration (named after it), then one per
+    configuration and model (R80EAM), for a group."""
     if stage == "unladen":
         return []
-    if not is_group(name):
-        return ["particles"] if stage != "agglomeration" else list(models)
-    ms = members(name)
+    group = is_group(name)
     if stage != "agglomeration":
-        return ms
-    return [m + model for m in ms for model in models]
+        return [(m if group else "particles", m, "none")
+                for m in members(name)]
+    return [(m + model if group else model, m, model)
+            for m in members(name) for model in models]
+
+
+def clouds(name, stage, models):
+    """The clouds of a stage (_made)."""
+    return [c for c, _, _ in _made(name, stage, models)]
 
 
 def branches(name, models):
     """Each agglomeration cloud -> the dispersion cloud it starts from."""
-    if not is_group(name):
-        return {model: "particles" for model in models}
-    return {m + model: m for m in members(name) for model in models}
+    start = {m: c for c, m, _ in _made(name, "release", ())}
+    return {c: start[m] for c, m, _ in _made(name, "agglomeration", models)}
 
 
 def cloud_key(name, cloud):
     """(configuration, model) of an agglomeration cloud of the run of
     name (a configuration or a group)."""
+    for c, m, model in _made(name, "agglomeration", MODELS):
+        if c == cloud:
+            return (m, model)
     if not is_group(name):
         return (name, cloud)
-    for m in members(name):
-        if cloud.startswith(m) and cloud[len(m):] in MODELS:
-            return (m, cloud[len(m):])
     raise KeyError(f"{cloud}: not an agglomeration cloud of the "
                    f"configuration group {name}")
 
@@ -160,12 +165,7 @@ def properties(case, name, stage, models):
     for a configuration alone: the tutorial's own files serve)."""
     if not is_group(name):
         return
-    ms = members(name)
-    if stage == "agglomeration":
-        made = [(m + model, m, model) for m in ms for model in models]
-    else:
-        made = [(m, m, "none") for m in ms]
-    for cloud, m, model in made:
+    for cloud, m, model in _made(name, stage, models):
         write_foamfile(
             Path(case) / "constant" / f"{cloud}Properties", "dictionary",
             "constant", f"{cloud}Properties", f"""\
