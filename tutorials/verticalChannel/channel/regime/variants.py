@@ -1,7 +1,8 @@
 """verticalChannel regime study: its variants, in order (a preset each),
 with what each changes from `small`, the entries in which two of them
-differ (shortcut) and which is another at a larger step (larger_step); channelRegime runs and posts them, channelRegimePairs
-and channelRegimeTrend derive from their presets which pairs are one
+differ (shortcut) and which is another at a larger step (larger_step);
+channelRegime runs and posts them, channelRegimePairs and
+channelRegimeTrend derive from their presets which pairs are one
 shortcut apart and which variants refine the grid alone."""
 
 from channel.case import settings
