@@ -8,12 +8,16 @@ R60 run as one group give, cloud by cloud, what each gives run alone
 particles of every write, byte for byte but the cloud's name), with the
 fluid solved once."""
 
+import json
 import re
 import shutil
 import subprocess
+import sys
+from pathlib import Path
 
 import pytest
 
+from channelTestRuns import TUTORIAL
 from test_channelStagesFrom import settings, with_presets
 
 
@@ -74,6 +78,95 @@ def test_groups_refused(tmp_path, group, message):
                    "release")
     assert res.returncode == 1
     assert message in res.stderr, res.stderr
+
+
+@pytest.mark.parametrize("configs, before, said", [
+    ("C1 C1", (), ["C1 is named 2 times in -configs (C1, C1)"]),
+    ("C1 C1+R80+R60", (), ["C1 is named 2 times in -configs (C1, "
+                           "C1+R80+R60)"]),
+    ("R80+R60 R60+C1", (), ["R60 is named 2 times in -configs (R80+R60, "
+                            "R60+C1)"]),
+    ("C1+R80+R60 C2", ("C1", "C2", "unladen", "report"),
+     ["C1 (C1+R80+R60) has run before as C1 in {base}/C1"]),
+    ("R80 C1", ("R80+R60",), ["R80 (R80) has run before as R80+R60 in "
+                             "{base}/R80+R60"]),
+    ("C1+R80+R60 C2", ("C1+R80+R60", "C2", "C3"), []),
+    ("C1 C2 R80 R60", (), []),
+])
+def test_a_configuration_runs_once(tmp_path, configs, before, said):
+    """A configuration named twice, or run before under another name
+    (alone where a group names it, in a group where it is named alone),
+    is refused: the report would find two runs of it; a folder of the
+    same name is that run, continued, and folders that are not
+    configurations (unladen, report) do not count."""
+    case = with_presets(tmp_path)
+    base = case / "runs" / "smoke"
+    for d in before:
+        (base / d / "dispersion").mkdir(parents=True)
+    code = ("import sys; from pathlib import Path; "
+            "from channel.case import groups; "
+            "print('\\n'.join(groups.twice(sys.argv[1].split(), "
+            "groups.runs_before(Path('runs/smoke')))))")
+    res = subprocess.run([sys.executable, "-c", code, configs], cwd=case,
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    lines = [x for x in res.stdout.splitlines() if x]
+    assert len(lines) == len(said), lines
+    for line, want in zip(lines, said):
+        assert line.startswith(want.format(base=Path("runs/smoke"))), line
+
+
+def test_the_driver_refuses_a_second_run_before_it_starts(tmp_path,
+                                                         foam_env):
+    """C1 run alone before and now named in a group: the driver stops
+    with exit status 1, naming the folder, and starts nothing."""
+    case = with_presets(tmp_path)
+    alone = case / "runs" / "smoke" / "C1" / "dispersion"
+    alone.mkdir(parents=True)
+    res = allrun(case, "C1+R80+R60")
+    assert res.returncode == 1, res.stdout[-2000:]
+    assert "Allrun: C1 (C1+R80+R60) has run before as C1 in runs/smoke/C1:" \
+        " the report takes each configuration from one run; remove " \
+        "runs/smoke/C1, or name C1 as it ran there (C1)" in res.stdout, \
+        res.stdout
+    assert sorted(p.name for p in (case / "runs" / "smoke").iterdir()) \
+        == ["C1"]
+    assert not any(alone.iterdir())
+
+
+def test_the_matrix_runs_each_configuration_once_and_shares_the_fluid():
+    """-matrix names every configuration of the presets file once, the
+    one-way ones (sub-models off) in one group, accepted at every
+    preset (the members agree there in all but e_n,p and the wall)."""
+    code = """
+import json
+from channel.case import groups, presets, runs
+configs = runs.options(["-matrix"]).configs.split()
+ps = [p for p in presets.read_presets()
+      if p not in ("FoamFile", "common", "configurations")]
+for p in ps:
+    for c in configs:
+        groups.check(p, c)
+one_way = [c for c in presets.read_presets()["configurations"]
+           if not presets.configuration(c)["twoWay"]]
+print(json.dumps({
+    "members": [groups.members(c) for c in configs],
+    "all": list(presets.read_presets()["configurations"]),
+    "oneWay": one_way, "presets": len(ps),
+    "twice": groups.twice(configs)}))
+"""
+    res = subprocess.run([sys.executable, "-c", code], cwd=TUTORIAL,
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    r = json.loads(res.stdout)
+    named = [m for ms in r["members"] for m in ms]
+    assert sorted(named) == sorted(r["all"]) and len(r["all"]) == 6
+    assert r["twice"] == []
+    assert r["presets"] > 10
+    # the one-way configurations (C1, R80, R60) in one LES
+    assert sorted(r["oneWay"]) == ["C1", "R60", "R80"]
+    assert [sorted(ms) for ms in r["members"] if len(ms) > 1] == \
+        [sorted(r["oneWay"])]
 
 
 def allrun(case, configs, *extra):

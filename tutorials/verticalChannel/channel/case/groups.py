@@ -34,6 +34,8 @@ its own, so cloudCommon's #include of it leaves each cloud's).
     clouds("R80+R60", "agglomeration", ("EAM", "MAM"))
         -> ["R80EAM", "R80MAM", "R60EAM", "R60MAM"]
     check("regime64", "R80+R60")    # stops naming what differs
+    twice(["C1+R80+R60"], runs_before(Path("runs/regime64")))
+        -> what would run a configuration twice (none: [])
 """
 
 import sys
@@ -42,7 +44,7 @@ from pathlib import Path
 from aggloTools.foamfile import write_foamfile
 
 from channel.case.presets import (MODELS, PER_CONFIGURATION_KEYS,
-                                  configuration, preset)
+                                  configuration, preset, read_presets)
 
 SEP = "+"
 #: The entries of a configuration that a group's members must share (the
@@ -100,6 +102,45 @@ def check(pname, name):
                      f"{' '.join(differ)}; a group's configurations may "
                      "differ only in their collision coefficients (en, "
                      "wall)")
+
+
+def runs_before(base):
+    """The configurations and groups run (or begun) before under base:
+    its folders named after configurations of the presets file."""
+    known = set(read_presets()["configurations"])
+    if not Path(base).is_dir():
+        return []
+    return [p for p in sorted(Path(base).iterdir()) if p.is_dir()
+            and all(m in known for m in p.name.split(SEP))]
+
+
+def twice(names, before=()):
+    """Where a call's configurations and groups (names) would run a
+    configuration twice, one line each: a configuration in two of names,
+    or in one of names and in another name among the folders run before
+    (before: runs_before); the report takes each configuration from one
+    run, so this stops a call before it spends hours on a second one. A
+    name run before under its own name is that run, continued."""
+    out = []
+    where = {}
+    for n in names:
+        for m in members(n):
+            where.setdefault(m, []).append(n)
+    for m, ns in where.items():
+        if len(ns) > 1:
+            out.append(f"{m} is named {len(ns)} times in -configs "
+                       f"({', '.join(ns)}): each configuration runs once, "
+                       "alone or in one group")
+    for d in before:
+        if d.name in names:
+            continue
+        for m in members(d.name):
+            if m in where:
+                out.append(f"{m} ({where[m][0]}) has run before as "
+                           f"{d.name} in {d}: the report takes each "
+                           f"configuration from one run; remove {d}, or "
+                           f"name {m} as it ran there ({d.name})")
+    return out
 
 
 def _made(name, stage, models):
