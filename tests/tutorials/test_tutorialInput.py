@@ -151,7 +151,14 @@ def test_channel_preset_values_checked(tmp_path, foam_env, block, entry,
 
 
 @pytest.mark.parametrize("entry, value, words", [
-    ("subModels", "onn", "'onn' is not one of: on off"),
+    ("subModels", "onn", "'onn' is not one of: on off, or a list of "
+     "(twoWayCoupling sgsDispersion shearLift rotationLift)"),
+    ("subModels", "()", "'()' is not one of: on off, or a list of"),
+    ("subModels", "(sgsDispersion lfit)", "(sgsDispersion lfit): "
+     "sub-model 'lfit' is not one of: twoWayCoupling sgsDispersion "
+     "shearLift rotationLift"),
+    ("subModels", "(shearLift sgsDispersion shearLift)", "shearLift named "
+     "twice"),
     ("wall", "rouhg", "'rouhg' is not one of: smooth rough"),
     ("en", "1.5", "'1.5' is out of range [0, 1]"),
     ("d", "-1e-6", "out of range (0, inf)"),

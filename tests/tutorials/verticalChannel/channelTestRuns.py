@@ -64,3 +64,39 @@ def last_profiles(adir, cloud):
         "*/profiles.dat"), key=lambda f: float(f.parent.name))
     text = files[-1].read_text()
     return text, np.loadtxt(files[-1])
+
+
+def write_dispersion(p, case, with_stats=True, cloud="particles",
+                     counts=1):
+    """A release uniform for its first 10 steps (alpha 1 everywhere), then
+    20 steps with the slabs next to the walls at 3 and the rest at 1,
+    written as the averages over 10 and 30 steps at T* 0.5 and 1.5 after
+    the release; stats.dat: 4 collisions and 1 wall impact by the first
+    write, 24 and 11 by the second (counters from 0 at the release),
+    times counts; of the cloud named."""
+    settings = script("channel.case.settings")
+    nb = 16
+    later = np.ones(nb)
+    later[[0, -1]] = 3.0
+    t0 = settings.end_time(p, "unladen")
+    writes = ((10, np.ones(nb), t0 + 0.5 * p["tScale"], 4, 1),
+              (30, (10 * np.ones(nb) + 20 * later) / 30,
+               t0 + 1.5 * p["tScale"], 24, 11))
+    base = case / "postProcessing" / f"{cloud}HardSphere"
+    rows = [f"{t0:.17g} 0 0"]
+    for n, alpha, t, ncol, nwall in writes:
+        d = base / f"{t:.12g}"
+        d.mkdir(parents=True)
+        prof = "\n".join(f"{(i + 0.5) / nb:.6g} {float(a):.17g}"
+                          for i, a in enumerate(alpha))
+        (d / "profiles.dat").write_text(
+            f"# Profiles of cloud {cloud} along (0 1 0), {n} steps "
+            f"sampled\n# x alpha\n{prof}\n")
+        rows.append(f"{t:.17g} {counts * ncol} {counts * nwall}")
+    if with_stats:
+        d = base / f"{t0:.12g}"
+        d.mkdir(parents=True, exist_ok=True)
+        (d / "stats.dat").write_text(
+            f"# Hard-sphere statistics of cloud {cloud}\n# Time nCol nWall"
+            "\n" + "\n".join(rows) + "\n")
+    return t0

@@ -2,8 +2,9 @@
 `-configs R80+R60`): the group's caseSettings (a cloud per configuration
 and stage, each configuration's collision coefficients in its own entry),
 the groups refused (a two-way member, a member named twice, members
-whose particles differ), and the run exact: the smoke preset's R80 and
-R60 run as one group give, cloud by cloud, what each gives run alone
+whose particles differ), and the run exact: the smoke preset's R80, R60
+and C2oneWay (a sub-model variant: lift forces and SGS velocity, one-way)
+run as one group give, cloud by cloud, what each gives run alone
 (statistics, profiles, size distributions, collision-event logs and
 particles of every write, byte for byte but the cloud's name), with the
 fluid solved once."""
@@ -41,20 +42,34 @@ def test_the_group_case_settings(tmp_path):
     a = e["agglomeration"]
     assert a["members"] == "(R80 R60)"
     # each configuration's own e_n,p and wall (the presets'
-    # configurations: 0.80 and 0.60); none of the group's own
+    # configurations: 0.80 and 0.60) and sub-models; none of the group's
+    own = {"subModels", "cloudForces", "dispersionModel", "enParticle",
+           "wallType", "wallCoeffs"}
     for name, en in (("R80", "0.8"), ("R60", "0.6")):
         assert f"enParticle {en};" in a[name]
         assert f"smoothCoeffs {{ en {en}; et 0.44;" in a[name]
-    assert not {"enParticle", "wallType", "wallCoeffs"} & set(a)
+        assert "dispersionModel none;" in a[name]
+    assert not own & set(a)
     # the rest is the first configuration's, alone
     alone = entries(settings(case, "smoke", "R80", "agglomeration").stdout)
-    for k in set(alone) - {"configuration", "clouds", "enParticle",
-                           "wallType", "wallCoeffs"}:
+    for k in set(alone) - {"configuration", "clouds"} - own:
         assert a[k] == alone[k], k
+    # and a member's own entries are its lines alone (a sub-model
+    # variant beside C1: its forces and SGS velocity its own)
+    g = entries(settings(case, "smoke", "C1+C2oneWay", "release").stdout)
+    for m in ("C1", "C2oneWay"):
+        solo = entries(settings(case, "smoke", m, "release").stdout)
+        for k in own:
+            v = solo[k].split(";")[0]      # subModels: its comment dropped
+            assert f"{k} {v}" in g[m], (m, k)
+    assert "SaffmanMeiLiftForce" in g["C2oneWay"] \
+        and "SaffmanMeiLiftForce" not in g["C1"]
 
 
 @pytest.mark.parametrize("group, message", [
-    ("C1+C2", "C2 is two-way coupled (subModels on)"),
+    ("C1+C2", "C2 is two-way coupled (its subModels switch "
+              "twoWayCoupling on)"),
+    ("C1+C2noLift", "C2noLift is two-way coupled"),
     ("R80+R80", "R80 named twice"),
     ("R80+", "name two configurations or more"),
     ("R80+C9", "unknown configuration 'C9'"),
@@ -135,9 +150,11 @@ def test_the_driver_refuses_a_second_run_before_it_starts(tmp_path,
 
 
 def test_the_matrix_runs_each_configuration_once_and_shares_the_fluid():
-    """-matrix names every configuration of the presets file once, the
-    one-way ones (sub-models off) in one group, accepted at every
-    preset (the members agree there in all but e_n,p and the wall)."""
+    """-matrix names every paper configuration of the presets file once
+    (subModels on or off; not the sub-model variants, which list
+    theirs), the one-way ones (sub-models off) in one group, accepted at
+    every preset (the members agree there in all but e_n,p and the
+    wall)."""
     code = """
 import json
 from channel.case import groups, presets, runs
@@ -147,11 +164,12 @@ ps = [p for p in presets.read_presets()
 for p in ps:
     for c in configs:
         groups.check(p, c)
-one_way = [c for c in presets.read_presets()["configurations"]
-           if not presets.configuration(c)["twoWay"]]
+paper = [c for c in presets.read_presets()["configurations"]
+         if presets.configuration(c)["subModels"] in ("on", "off")]
+one_way = [c for c in paper if not presets.configuration(c)["twoWay"]]
 print(json.dumps({
     "members": [groups.members(c) for c in configs],
-    "all": list(presets.read_presets()["configurations"]),
+    "all": paper,
     "oneWay": one_way, "presets": len(ps),
     "twice": groups.twice(configs)}))
 """
@@ -194,21 +212,25 @@ def same_but_name(a, b, name, group_name):
 def test_a_group_gives_each_configuration_run_alone(tmp_path):
     alone = with_presets(tmp_path / "alone")
     group = with_presets(tmp_path / "group")
-    res = allrun(alone, "R80 R60")
+    # R80 and R60 differ in e_n,p, C2oneWay from both in its sub-models
+    # too (the lift forces and the SGS velocity, one-way)
+    members = ("R80", "R60", "C2oneWay")
+    name = "+".join(members)
+    res = allrun(alone, " ".join(members))
     assert res.returncode == 0, res.stdout[-3000:]
-    res = allrun(group, "R80+R60")
+    res = allrun(group, name)
     assert res.returncode == 0, res.stdout[-3000:]
     ra, rg = alone / "runs" / "smoke", group / "runs" / "smoke"
     # one fluid for both: one dispersion and one agglomeration run
     assert sorted(p.name for p in rg.iterdir()) == \
-        ["R80+R60", "report", "unladen"]
-    agg = rg / "R80+R60" / "agglomeration"
+        [name, "report", "unladen"]
+    agg = rg / name / "agglomeration"
     n = 0
-    for c in ("R80", "R60"):
+    for c in members:
         for stage, clouds in (("dispersion", {"particles": c}),
                               ("agglomeration", {m: c + m for m in
                                                  ("EAM", "MAM")})):
-            a_dir, g_dir = ra / c / stage, rg / "R80+R60" / stage
+            a_dir, g_dir = ra / c / stage, rg / name / stage
             for mine, theirs in clouds.items():
                 pp = [(a_dir / "postProcessing" / f"{mine}{k}",
                        g_dir / "postProcessing" / f"{theirs}{k}")
@@ -226,29 +248,31 @@ def test_a_group_gives_each_configuration_run_alone(tmp_path):
                         assert same_but_name(a / f, g / f, mine, theirs), \
                             (a / f, g / f)
                         n += 1
-    assert n > 100
+    assert n > 150
     # the fluid is the same at the end (one-way: the particles' own)
     last = sorted(agg.glob("0.*"))[-1].name
     assert (agg / last / "U").read_bytes() == \
         (ra / "R80" / "agglomeration" / last / "U").read_bytes()
-    # and the comparison can fail: R80 and R60 differ alone (e_n,p)
+    # and the comparison can fail: the members differ alone (e_n,p; the
+    # sub-models)
     st = "postProcessing/EAMHardSphere/*/stats.dat"
-    r80 = next((ra / "R80" / "agglomeration").glob(st)).read_bytes()
-    r60 = next((ra / "R60" / "agglomeration").glob(st)).read_bytes()
-    assert r80 != r60
-    # the reports agree row by row (R80 and R60, both models)
+    stats = [next((ra / c / "agglomeration").glob(st)).read_bytes()
+             for c in members]
+    assert len(set(stats)) == 3
+    # the reports agree row by row (each member, both models)
     rows = [[ln for ln in (r / "report" / "regression.txt").read_text()
-             .splitlines() if ln.startswith(("R80 ", "R60 "))]
+             .splitlines() if ln.startswith(tuple(c + " " for c in
+                                                  members))]
             for r in (ra, rg)]
-    assert rows[0] == rows[1] and len(rows[0]) >= 16
+    assert rows[0] == rows[1] and len(rows[0]) >= 24
     # one fluid, reported once by its folder's name
     text = (rg / "report" / "regression.txt").read_text()
-    assert text.count("fluid R80+R60 agglomeration: u_tau/U_B") == 1
+    assert text.count(f"fluid {name} agglomeration: u_tau/U_B") == 1
     assert "fluid R80 agglomeration" not in text
     # a configuration run both alone and in a group is refused by the
     # post, naming both
-    shutil.copytree(rg / "R80+R60", ra / "R80+R60")
+    shutil.copytree(rg / name, ra / name)
     res = allrun(alone, "R80", "-post")
     assert res.returncode == 1
     assert "channel.post: R80 EAM ran twice, in" in res.stdout
-    assert "R80+R60/agglomeration" in res.stdout
+    assert f"{name}/agglomeration" in res.stdout

@@ -140,3 +140,25 @@ def test_a_configuration_of_its_own_particle_number(mods):
     rows = rows_by_name(reg, channel, res)
     assert rows["EAM f_agg C4/C2 (4 um/12 um)"]["status"] == "FAIL"
     assert rows["statement EAM f_agg C4/C2"]["status"] == "FAIL"
+
+
+def test_sub_model_variants_reported_against_c1_and_c2(mods):
+    """A sub-model variant (the presets' C1lift: the lift forces alone)
+    is reported against the paper's configurations it differs from in
+    the sub-models alone, C1 and C2 (not C3: rough wall, not C4: 4 um),
+    unjudged: the paper gives no value."""
+    reg, channel = mods
+    res = paper_runs(channel, rel=0.02)
+    for m, k in (("EAM", 3.0), ("MAM", 0.5)):
+        res[("C1lift", m)] = run("C1lift", m, k * 8.14e4, 6.67e2, rel=0.02)
+    rows = rows_by_name(reg, channel, res)
+    names = [q for q in rows if "C1lift/" in q]
+    assert sorted(names) == sorted(
+        f"{m} f_{q} C1lift/{b} (sub-models)" for m in ("EAM", "MAM")
+        for q in ("col", "agg") for b in ("C1", "C2"))
+    r = rows["EAM f_col C1lift/C1 (sub-models)"]
+    assert r["sim"] == pytest.approx(3.0 * 8.14e4 / 8.14e4)
+    assert r["status"] == "n/r" and "shearLift rotationLift" in r["note"]
+    r = rows["MAM f_col C1lift/C2 (sub-models)"]
+    assert r["sim"] == pytest.approx(0.5 * 8.14e4 / 5.83e4)
+    assert r["sigma"] == pytest.approx(r["sim"] * 0.02 * 2 ** 0.5)

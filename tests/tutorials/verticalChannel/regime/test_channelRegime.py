@@ -8,7 +8,7 @@ import threading
 import numpy as np
 import pytest
 
-from channelTestRuns import script
+from channelTestRuns import script, write_dispersion
 
 
 def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
@@ -45,40 +45,6 @@ def test_regime_study_runs_side_by_side(monkeypatch, tmp_path):
 
 
 END = "\n// ****************************************************** //\n"
-
-
-def write_dispersion(p, case, with_stats=True):
-    """A release uniform for its first 10 steps (alpha 1 everywhere), then
-    20 steps with the slabs next to the walls at 3 and the rest at 1,
-    written as the averages over 10 and 30 steps at T* 0.5 and 1.5 after
-    the release; stats.dat: 4 collisions and 1 wall impact by the first
-    write, 24 and 11 by the second (counters from 0 at the release)."""
-    settings = script("channel.case.settings")
-    nb = 16
-    later = np.ones(nb)
-    later[[0, -1]] = 3.0
-    t0 = settings.end_time(p, "unladen")
-    writes = ((10, np.ones(nb), t0 + 0.5 * p["tScale"], 4, 1),
-              (30, (10 * np.ones(nb) + 20 * later) / 30,
-               t0 + 1.5 * p["tScale"], 24, 11))
-    base = case / "postProcessing" / "particlesHardSphere"
-    rows = [f"{t0:.17g} 0 0"]
-    for n, alpha, t, ncol, nwall in writes:
-        d = base / f"{t:.12g}"
-        d.mkdir(parents=True)
-        prof = "\n".join(f"{(i + 0.5) / nb:.6g} {float(a):.17g}"
-                          for i, a in enumerate(alpha))
-        (d / "profiles.dat").write_text(
-            f"# Profiles of cloud particles along (0 1 0), {n} steps "
-            f"sampled\n# x alpha\n{prof}\n")
-        rows.append(f"{t:.17g} {ncol} {nwall}")
-    if with_stats:
-        d = base / f"{t0:.12g}"
-        d.mkdir(parents=True, exist_ok=True)
-        (d / "stats.dat").write_text(
-            "# Hard-sphere statistics of cloud particles\n# Time nCol nWall"
-            "\n" + "\n".join(rows) + "\n")
-    return t0
 
 
 def test_concentration_between_writes(tmp_path):

@@ -12,12 +12,13 @@ configuration and model (R80EAM R80MAM R60EAM R60MAM). The fluid is
 solved once instead of once per configuration.
 
 A group's configurations must agree in everything their runs' caseSettings
-hold but the collision coefficients (e_n,p and the wall): the particles'
-diameter and number, the sub-models (so the forces and the dispersion),
-the coupling's scale. Each cloud takes its configuration's coefficients
+hold but their one-way sub-models (the forces, the SGS velocity) and
+collision coefficients (e_n,p and the wall): the particles' diameter and
+number, the coupling's scale. Each cloud takes its configuration's own
 from caseSettings, where a group writes one entry per configuration,
 
-    R80 { enParticle 0.8; wallType smooth; wallCoeffs { ... } }
+    R80 { subModels off; cloudForces { ... } dispersionModel none;
+          enParticle 0.8; wallType smooth; wallCoeffs { ... } }
 
 expanded by the cloud's constant/<cloud>Properties (written by the
 driver, properties()) before the common cloud set-up:
@@ -27,8 +28,8 @@ driver, properties()) before the common cloud set-up:
     cloudAgglomerationModel EAM;
     #include "cloudCommon"
 
-(the group's caseSettings has no enParticle, wallType or wallCoeffs of
-its own, so cloudCommon's #include of it leaves each cloud's).
+(the group's caseSettings has none of these entries of its own, so
+cloudCommon's #include of it leaves each cloud's).
 
     members("R80+R60")                          -> ["R80", "R60"]
     clouds("R80+R60", "agglomeration", ("EAM", "MAM"))
@@ -48,10 +49,13 @@ from channel.case.presets import (MODELS, PER_CONFIGURATION_KEYS,
 
 SEP = "+"
 #: The entries of a configuration that a group's members must share (the
-#: wall and e_n,p are each cloud's own)
-SHARED = ("d", "subModels")
-#: The caseSettings entries that are each member's own (its entry)
-OWN = ("enParticle", "wallType", "wallCoeffs")
+#: sub-models, the wall and e_n,p are each cloud's own)
+SHARED = ("d",)
+#: The caseSettings entries that are each member's own (its entry): its
+#: one-way sub-models (the forces, the SGS velocity) and its collision
+#: coefficients
+OWN = ("subModels", "cloudForces", "dispersionModel", "enParticle",
+       "wallType", "wallCoeffs")
 
 
 def is_group(name):
@@ -74,10 +78,10 @@ def members(name):
         sys.exit(f"{where}: {' '.join(twice)} named twice")
     for m in ms:
         if configuration(m)["twoWay"]:
-            sys.exit(f"{where}: {m} is two-way coupled (subModels on): its "
-                     "particles move the fluid, so it cannot share an LES; "
-                     "a group's configurations must be one-way (subModels "
-                     "off)")
+            sys.exit(f"{where}: {m} is two-way coupled (its subModels "
+                     "switch twoWayCoupling on): its particles move the "
+                     "fluid, so it cannot share an LES; a group's "
+                     "configurations must be one-way")
     return ms
 
 
@@ -88,8 +92,8 @@ def lead(name):
 
 def check(pname, name):
     """Stop unless the group's configurations agree, in the preset pname,
-    in everything but their collision coefficients (SHARED, and the
-    preset's perConfiguration entries)."""
+    in everything but their one-way sub-models and collision coefficients
+    (SHARED, and the preset's perConfiguration entries)."""
     ms = members(name)
     c0, p0 = configuration(ms[0]), preset(pname, ms[0])
     for m in ms[1:]:
@@ -100,8 +104,8 @@ def check(pname, name):
             sys.exit(f"channel.case: configuration group '{name}' in preset "
                      f"{pname}: {ms[0]} and {m} differ in "
                      f"{' '.join(differ)}; a group's configurations may "
-                     "differ only in their collision coefficients (en, "
-                     "wall)")
+                     "differ only in their one-way sub-models and their "
+                     "collision coefficients (subModels, en, wall)")
 
 
 def runs_before(base):
@@ -212,8 +216,8 @@ def properties(case, name, stage, models):
             "constant", f"{cloud}Properties", f"""\
 // Cloud "{cloud}" of the configuration group {name}
 // (channel.case.groups, written by ./Allrun): configuration {m}'s
-// collision coefficients (its entry of caseSettings), agglomeration
-// model {model}
+// sub-models and collision coefficients (its entry of caseSettings),
+// agglomeration model {model}
 
 #include "$FOAM_CASE/system/caseSettings"
 

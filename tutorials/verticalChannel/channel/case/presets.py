@@ -28,6 +28,12 @@ PRESET_KEYS = {"n", "yGrading", "dtStar", "nParticles", "couplingScale",
                "writeStar", "profileBins", "seededPairs", "models",
                "stagesFrom", "perConfiguration"} | COMMON_KEYS
 CONFIGURATION_KEYS = {"subModels", "wall", "d", "en"}
+#: What a configuration's `subModels` may switch on, one by one (`on`:
+#: all, the paper's three sub-models with its lift taken as both forces;
+#: `off`: none): the two-way coupling, the Pozorski-Apte SGS velocity
+#: seen by the particles, the Saffman-Mei shear lift, the rotation lift
+SUB_MODELS = ("twoWayCoupling", "sgsDispersion", "shearLift",
+              "rotationLift")
 #: What a preset's perConfiguration entry sets for one configuration: the
 #: particle number and, with it, the two-way coupling's scale (both given:
 #: couplingScale 6e6/nParticles keeps the paper's mass loading)
@@ -165,10 +171,31 @@ def configuration(name):
         casesettings.named(read_presets()["configurations"], name,
                            "configuration", "channel.case"),
         CONFIGURATION_NUMBERS, f"channel.case: presets/configurations/{name}")
-    for key, valid in (("subModels", ("on", "off")),
-                       ("wall", ("smooth", "rough"))):
-        casesettings.choice(c[key], valid, f"channel.case: presets/"
-                            f"configurations/{name}: {key}")
+    where = f"channel.case: presets/configurations/{name}"
+    casesettings.choice(c["wall"], ("smooth", "rough"), f"{where}: wall")
     c["name"] = name
-    c["twoWay"] = c["subModels"] == "on"
+    c["switched"] = sub_models(c["subModels"], f"{where}: subModels")
+    if c["subModels"] not in ("on", "off"):
+        c["subModels"] = f"({' '.join(c['switched'])})"
+    c["twoWay"] = "twoWayCoupling" in c["switched"]
     return c
+
+
+def sub_models(value, where):
+    """The sub-models a configuration's `subModels` switches on: `on`
+    (all of SUB_MODELS: the paper's C2-C4), `off` (none: C1), or a list
+    of SUB_MODELS' names, each at most once (the paper's three split:
+    README.md, "Which sub-model drives C2's particles to the walls")."""
+    text = " ".join(map(str, value if isinstance(value, list) else [value]))
+    if text in ("on", "off"):
+        return SUB_MODELS if text == "on" else ()
+    names = text.replace("(", " ").replace(")", " ").split()
+    if not text.startswith("(") or not text.endswith(")") or not names:
+        sys.exit(f"{where} '{text}' is not one of: on off, or a list of "
+                 f"({' '.join(SUB_MODELS)})")
+    for v in names:
+        casesettings.choice(v, SUB_MODELS, f"{where} {text}: sub-model")
+    twice = sorted({v for v in names if names.count(v) > 1})
+    if twice:
+        sys.exit(f"{where} {text}: {' '.join(twice)} named twice")
+    return tuple(v for v in SUB_MODELS if v in names)

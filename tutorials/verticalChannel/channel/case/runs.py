@@ -10,7 +10,9 @@ four-way coupled 12/4 um quartz particles (doc/cases.md Part A).
             medium, paper, and the regime study's variants; README.md
             says what each resolves, 'Run times' what each costs
   -configs  (default C1) configurations of the presets file:
-            C1 C2 C3 C4 (Table D.6) R80 R60 (restitution variation);
+            C1 C2 C3 C4 (Table D.6) R80 R60 (restitution variation),
+            C1sgs C1lift C1shearLift C1rotationLift C2noSgs C2noLift
+            C2oneWay (C2's sub-models split: preset subModelProbe);
             one-way configurations joined with '+' (R80+R60) run as
             clouds of one LES (channel.case.groups): the fluid solved
             once for all of them, each its own clouds (runs/<preset>/
@@ -18,7 +20,7 @@ four-way coupled 12/4 um quartz particles (doc/cases.md Part A).
             each configuration runs once: named twice, or run before
             under another name (alone, in another group), it stops the
             call before anything starts
-  -matrix   all of them, EAM and MAM each: -configs "C1+R80+R60 C2 C3
+  -matrix   the paper's, EAM and MAM each: -configs "C1+R80+R60 C2 C3
             C4", the one-way ones (C1, R80, R60) as clouds of one LES,
             each cloud what its run alone gives, byte for byte (at
             regime64 about 84 CPU hours instead of 103 run alone:
@@ -52,6 +54,9 @@ channel.post.replay replays the agglomeration stages' collision-event logs
 (replay.json, replay.txt, alphaReplay<config><cloud>.png).
 A preset with break-up: channel.post.breakup (breakup.txt, breakup.json,
 breakupHistory.png, breakupSizes.png).
+Not run by Allrun: python -m channel.post.dispersion PRESET (how each
+configuration's particles reach the walls in its release and dispersion:
+dispersion.txt, dispersion.json).
 Ctrl-C stops every run it started (exit status 130).
 Run times on the 2-core development machine: README.md.
 """
@@ -122,7 +127,7 @@ class Channel:
             settings.settings(self.a.preset, config, stage, tuple(models),
                              self.a.np))
         # a group's clouds: their cloud properties (each configuration's
-        # collision coefficients)
+        # sub-models and collision coefficients)
         groups.properties(d, config, stage, models or settings.preset(
             self.a.preset)["models"])
 

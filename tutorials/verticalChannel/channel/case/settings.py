@@ -91,6 +91,22 @@ def collision(c):
             "wallCoeffs": f"{{ {wall} }}"}
 
 
+def forces(c):
+    """The caseSettings values of a configuration c that follow from the
+    sub-models it switches on (presets.SUB_MODELS), apart from the
+    coupling: the clouds' forces (drag and gravity, plus the lift forces
+    switched on) and the SGS velocity's model, as text; a group's
+    members' own (groups.OWN)."""
+    on = c["switched"]
+    lift = (("SaffmanMeiLiftForce { U U; }",) if "shearLift" in on else ()) \
+        + (("rotationLift { model OesterleBuiDinh; }",)
+           if "rotationLift" in on else ())
+    return {"cloudForces": "{ " + " ".join(
+                ("SchillerNaumannDrag;",) + lift + ("gravity;",)) + " }",
+            "dispersionModel": ("PozorskiApte" if "sgsDispersion" in on
+                                else "none")}
+
+
 def settings(pname, cname, stage, models=(), nprocs=1):
     """The caseSettings of one stage of a configuration, or of a group
     of one-way configurations run as clouds of one LES (groups)."""
@@ -110,9 +126,6 @@ def settings(pname, cname, stage, models=(), nprocs=1):
                      " agglomeration model per run")
     clouds = "(" + " ".join(groups.clouds(cname, stage, models)) + ")"
     on = c["twoWay"]
-    forces = ("SchillerNaumannDrag; SaffmanMeiLiftForce { U U; }"
-              " rotationLift { model OesterleBuiDinh; } gravity;"
-              if on else "SchillerNaumannDrag; gravity;")
     clouds_comment = (
         "// Clouds of this stage: none (unladen), particles (release, "
         "dispersion:\n// no agglomeration), then one cloud per "
@@ -122,11 +135,16 @@ def settings(pname, cname, stage, models=(), nprocs=1):
             "// Clouds of this stage: one per configuration of the group "
             "(release,\n// dispersion), one per configuration and model "
             "(agglomeration)")
-        own = groups.entries(
-            cname, lambda m: collision(configuration(m)))
+        own = groups.entries(cname, lambda m: dict(
+            subModels=configuration(m)["subModels"],
+            **forces(configuration(m)), **collision(configuration(m))))
+        sub = ""
     else:
         own = "\n".join(f"{k:<15} {v}" + ("" if v.startswith("{") else ";")
-                        for k, v in collision(c).items())
+                        for k, v in dict(forces(c), **collision(c)).items())
+        sub = (f"subModels       {c['subModels']};    // " + (
+            "two-way coupling + lift + SGS" if c["subModels"] in
+            ("on", "off") else "those switched on") + "\n")
     Lx, Ly, Lz = p["L"]
     nx, ny, nz = p["n"]
     write_steps = max(1, int(round(p["writeStar"] / p["dtStar"])))
@@ -185,11 +203,8 @@ nProcs          {nprocs};
 dParticle       {c['d']};
 nParticles      {int(p['nParticles'])};
 seed            {p['seed']};
-subModels       {c['subModels']};    // two-way coupling + lift + SGS
-coupled         {'true' if on else 'false'};
+{sub}coupled         {'true' if on else 'false'};
 couplingScale   {p['couplingScale'] if on else 1};
-cloudForces     {{ {forces} }}
-dispersionModel {'PozorskiApte' if on else 'none'};
 {own}
 profileBins     {p['profileBins']};
 

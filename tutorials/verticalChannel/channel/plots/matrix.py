@@ -9,7 +9,7 @@ import math
 
 from channel.case import settings
 
-#: The order of the configurations on the axis
+#: The order of the paper's configurations on the axis
 ORDER = ("C1", "C2", "C3", "C4", "R80", "R60")
 MODELS = settings.MODELS
 #: The panels: the quantity's key, its axis label
@@ -18,12 +18,18 @@ PANELS = (("col", r"$f_{col}\,s^2$ [1/T*]"),
           ("alpha", r"$\alpha_f = f_{agg}/f_{col}$ [-]"))
 
 
+def order(res):
+    """The configurations on the axis: ORDER, then any other run (the
+    sub-model variants of the presets file) by name."""
+    return ORDER + tuple(sorted({c for c, _ in res} - set(ORDER)))
+
+
 def points(res):
     """The values drawn: per panel and model, (configuration, value,
     sigma, paper) of every run in res[(config, model)] (sigma of alpha_f
     propagated; the paper's None where Table D.6 has none)."""
     out = {q: {m: [] for m in MODELS} for q, _ in PANELS}
-    for c in ORDER:
+    for c in order(res):
         ref = settings.TABLE_D6.get(c)
         for m in MODELS:
             r = res.get((c, m))
@@ -49,7 +55,8 @@ def matrix_figure(out, p, res):
     import matplotlib.pyplot as plt
 
     pts = points(res)
-    configs = [c for c in ORDER if any((c, m) in res for m in MODELS)]
+    configs = [c for c in order(res)
+               if any((c, m) in res for m in MODELS)]
     x = {c: i for i, c in enumerate(configs)}
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
     for ax, (q, label) in zip(axes, PANELS):

@@ -246,10 +246,11 @@ def post(pname, reference=False):
 
 
 def command(argv, prog, doc, run, preset_help, reference_help,
-            runs_help=None):
+            runs_help=None, options=None):
     """The command line of a report of a preset (channel.post and its
-    siblings): PRESET [RUNS] [--reference], the preset checked before
-    run(args) makes the report (an unknown preset: its message, exit 1)."""
+    siblings): PRESET [RUNS] [--reference], and the options a report adds
+    (options(parser)), the preset checked before run(args) makes the
+    report (an unknown preset: its message, exit 1)."""
     ap = argparse.ArgumentParser(
         prog=prog, description=doc.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -257,6 +258,8 @@ def command(argv, prog, doc, run, preset_help, reference_help,
     if runs_help:
         ap.add_argument("runs", nargs="?", help=runs_help)
     ap.add_argument("--reference", action="store_true", help=reference_help)
+    if options:
+        options(ap)
     a = ap.parse_args(argv)
     try:
         settings.preset(a.preset)

@@ -179,6 +179,26 @@ def regression(p, res):
                     r, s = statements.frequency_ratio(ra, rb, q)
                     add(f"{m} f_{q} {c}/C1 (e_n 0.{c[1:]}/0.97)", r, s,
                         None, "no published value" if r else "")
+    # the sub-model variants (a configuration whose subModels lists its
+    # own): against the paper's configurations that differ from it in
+    # the sub-models alone (C1: all off, C2: all on); no published values
+    for c in sorted({c for c, _ in res} - set(TABLE_D6)):
+        v = settings.configuration(c)
+        if v["subModels"] in ("on", "off"):
+            continue
+        for base in sorted(TABLE_D6):
+            b = settings.configuration(base)
+            if any(v[k] != b[k] for k in ("wall", "d", "en")):
+                continue
+            for m in models:
+                ra, rb = res.get((c, m)), res.get((base, m))
+                if ra and rb:
+                    for q in ("col", "agg"):
+                        r, s = statements.frequency_ratio(ra, rb, q)
+                        add(f"{m} f_{q} {c}/{base} (sub-models)", r, s,
+                            None, "no published value: subModels "
+                            f"{v['subModels']} / {b['subModels']}"
+                            if r else "")
     # the paper's conclusions, each judged with its sigma
     rows += statements.statements(res, R, models)
     # hard checks

@@ -65,11 +65,12 @@ def near_wall_over_centre(alpha):
 START_SPAN = 100.0
 
 
-def _running_profiles(p, ddir):
-    """Each write's profiles.dat of the release and dispersion stages:
-    T* (absolute), the steps sampled since the release and the profile
+def _running_profiles(p, ddir, cloud="particles"):
+    """Each write's profiles.dat of the release and dispersion stages
+    (of the cloud: a group's are named after its configurations): T*
+    (absolute), the steps sampled since the release and the profile
     averaged over them (y, alpha)."""
-    base = Path(ddir) / "postProcessing" / "particlesHardSphere"
+    base = Path(ddir) / "postProcessing" / f"{cloud}HardSphere"
     out = []
     for f in sorted(base.glob("*/profiles.dat"),
                     key=lambda f: float(f.parent.name)):
@@ -115,17 +116,18 @@ def concentration(p, ddir, span=START_SPAN):
             "T0": w0["T"], "T1": last["T"], "file": str(last["file"])}
 
 
-def concentration_history(p, ddir, span=0.0):
+def concentration_history(p, ddir, span=0.0, cloud="particles"):
     """How the near-wall peak grows over the release and dispersion
     stages: per interval between writes (the first from the release, T*
     absolute; writes less than `span` T* after the interval's start are
     passed over, except the last), near_wall_over_centre of the profile
     of its steps (_between)."""
-    w = _running_profiles(p, ddir)
+    w = _running_profiles(p, ddir, cloud)
     out = []
     w0 = _release(p)
     for k, w1 in enumerate(w):
-        if w1["T"] - w0["T"] < span and k < len(w) - 1:
+        # (span less a rounding: times are written to 10 digits)
+        if w1["T"] - w0["T"] < span * (1 - 1e-6) and k < len(w) - 1:
             continue
         if w1["n"] > w0["n"]:
             out.append({"T0": w0["T"], "T1": w1["T"], "nearWallOverCentre":
@@ -134,9 +136,10 @@ def concentration_history(p, ddir, span=0.0):
     return out
 
 
-def dispersion_history(p, ddir):
-    """concentration_history with, per interval, the rates of the one
-    cloud of the release and dispersion stages from its stats.dat
+def dispersion_history(p, ddir, span=0.0, cloud="particles"):
+    """concentration_history with, per interval, the rates of a cloud of
+    the release and dispersion stages (the one of a configuration run
+    alone, `particles`) from its stats.dat
     (cumulative counters, interpolated at the interval's ends):
     collisions per T* scaled to the paper's particle number (x s^2, as
     f_col of Eq. 87) and wall impacts per particle and T*. Collisions
@@ -144,9 +147,9 @@ def dispersion_history(p, ddir):
     contacts as the concentration builds up, not the window's f_col.
     A stats.dat that cannot be read yet (a run writing it) leaves the
     rates out."""
-    out = concentration_history(p, ddir)
+    out = concentration_history(p, ddir, span, cloud)
     try:
-        st = read_stats(ddir, "particles")
+        st = read_stats(ddir, cloud)
     except (FileNotFoundError, ValueError):
         return out
     if not len(st["Time"]):
