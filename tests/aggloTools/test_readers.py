@@ -222,3 +222,25 @@ def test_entry_text(name, body):
 def test_entry_text_refused(name, words):
     with pytest.raises(ValueError, match=words):
         foamfile.entry_text(ALTERNATIVES, name)
+
+
+@pytest.mark.parametrize("name, kept", [
+    # the name rounded to 10 digits (timePrecision): the row at the
+    # restart time, 4e-11 above the name, is the earlier run's
+    ("0.1767760468", [0.17673185282828599, 0.17677604683999598]),
+    # an exact name (trailing zeros dropped): nothing after it kept
+    ("1", [0.5, 1.0]),
+])
+def test_restart_keeps_the_row_at_its_time(tmp_path, name, kept):
+    """The earlier run's rows up to the restart's time are kept, the
+    row at that time too where the folder's name is the time rounded;
+    the restart's rows follow, later rows of the earlier run are
+    replaced."""
+    t0 = kept[-1]
+    dt = kept[-1] - kept[-2]
+    stats_file(tmp_path, "0", "".join(
+        f"{t!r} 10 {i}\n" for i, t in enumerate(kept + [t0 + dt])))
+    stats_file(tmp_path, name, f"{t0 + dt!r} 10 7\n{t0 + 2 * dt!r} 10 8\n")
+    st = stats.read_stats(tmp_path)
+    assert st["Time"].tolist() == kept + [t0 + dt, t0 + 2 * dt]
+    assert st["nCol"].tolist() == [0, 1, 7, 8]

@@ -6,18 +6,29 @@ from pathlib import Path
 import numpy as np
 
 
+def name_precision(name):
+    """Half the last digit of a time folder's name (0.1767760468:
+    5e-11): the times that the name stands for, rounded, lie within it
+    (and within 1e-12 of it, relative, whatever the name)."""
+    mantissa = name.lower().split("e")[0]
+    exponent = int(name.lower().split("e")[1]) if "e" in name.lower() else 0
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return max(0.5 * 10.0 ** (exponent - decimals),
+               1e-12 * max(1.0, abs(float(name))))
+
+
 def read_stats(case, cloud="kinematicCloud"):
     """The rows of postProcessing/<cloud>HardSphere/<t>/stats.dat as a dict
     of numpy arrays. Restarted runs write a new start-time folder; the rows
-    are joined in time order (later folders win at equal times)."""
+    are joined in time order (later folders win after the restart's time:
+    the row at it, written by the earlier run, is kept)."""
     base = Path(case) / "postProcessing" / f"{cloud}HardSphere"
     cols, rows = None, []
     files = [sub / "stats.dat" for sub in sorted(
         base.iterdir(), key=lambda p: float(p.name))
         if (sub / "stats.dat").exists()]
     for k, f in enumerate(files):
-        t0 = float(f.parent.name)
-        rows = [r for r in rows if r[0] <= t0 + 1e-12 * max(1, abs(t0))]
+        new = []
         lines = f.read_text().splitlines()
         for n, line in enumerate(lines):
             if line.startswith("# Time"):
@@ -39,7 +50,14 @@ def read_stats(case, cloud="kinematicCloud"):
                         f"{f}, line {n + 1}: {len(row) or 'unreadable'} "
                         f"values for {len(cols)} columns (a write cut "
                         "off? restart the run from its last written time)")
-                rows.append(row)
+                new.append(row)
+        # the earlier rows up to the restart's time and before its first
+        # row: the folder's name is that time rounded to the case's
+        # timePrecision where the rows hold 17 digits, so the row at the
+        # restart time (the earlier run's) is kept, however it rounds
+        cut = float(f.parent.name) + name_precision(f.parent.name)
+        rows = [r for r in rows
+                if r[0] <= cut and (not new or r[0] < new[0][0])] + new
     if cols is None:
         raise FileNotFoundError(f"no stats.dat under {base}")
     arr = np.array(rows).reshape(-1, len(cols))
