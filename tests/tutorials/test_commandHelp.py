@@ -35,6 +35,7 @@ PYTHON = [
     ("verticalChannel", "-m channel.post", "--reference"),
     ("verticalChannel", "-m channel.regime", "post"),
     ("verticalChannel", "-m channel.post.replay", "--reference"),
+    ("verticalChannel", "-m channel.post.dispersion", "--span"),
     ("verticalChannel", "-m channel", "-preset"),
     ("shearFlowValidation", "-m shear.case", "settings"),
     ("shearFlowValidation", "-m shear.post", "rejudge"),

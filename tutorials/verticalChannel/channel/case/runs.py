@@ -155,8 +155,9 @@ class Channel:
             times.set_aside_incomplete_times(d)
         for line in said.getvalue().splitlines():
             print(f"    {tag}: {line}", flush=True)
-        if len(times.time_dirs(d / "processor0" if np > 1 else d)) > 1:
-            self.whole = False      # continued from a write
+        if continued(d / "processor0" if np > 1 else d,
+                     settings.preset(self.a.preset), stage):
+            self.whole = False
         print(f"    {tag}: started ({time.strftime('%H:%M:%S')}, log: "
               f"{d}/log.aggloPimpleFoam)", flush=True)
         cmd = ["aggloPimpleFoam"]
@@ -357,6 +358,16 @@ def work(a):
     print(f"cases and VTK files: {TUTORIAL / 'runs' / a.preset}/")
     print(run_time(a, configs, run, time.monotonic() - start))
     return status
+
+
+def continued(d, p, stage):
+    """Whether a stage of preset p in the case d continues from a write of
+    its own: a time folder after the stage's start, the end of the stage
+    before it (the release's writes share the dispersion's folder)."""
+    k = settings.STAGES.index(stage)
+    start = settings.end_time(p, settings.STAGES[k - 1]) if k else 0.0
+    ts = times.time_dirs(d)
+    return bool(ts) and float(ts[-1].name) > start + 0.5 * p["deltaT"]
 
 
 def run_time(a, configs, run, seconds):
