@@ -107,6 +107,13 @@ def forces(c):
                                 else "none")}
 
 
+def member_entries(name):
+    """A group member's own caseSettings values (groups.OWN): its
+    sub-models, forces, SGS model and collision coefficients."""
+    c = configuration(name)
+    return dict(subModels=c["subModels"], **forces(c), **collision(c))
+
+
 def settings(pname, cname, stage, models=(), nprocs=1):
     """The caseSettings of one stage of a configuration, or of a group
     of one-way configurations run as clouds of one LES (groups)."""
@@ -135,9 +142,7 @@ def settings(pname, cname, stage, models=(), nprocs=1):
             "// Clouds of this stage: one per configuration of the group "
             "(release,\n// dispersion), one per configuration and model "
             "(agglomeration)")
-        own = groups.entries(cname, lambda m: dict(
-            subModels=configuration(m)["subModels"],
-            **forces(configuration(m)), **collision(configuration(m))))
+        own = groups.entries(cname, member_entries)
         sub = ""
     else:
         own = "\n".join(f"{k:<15} {v}" + ("" if v.startswith("{") else ";")
