@@ -118,6 +118,20 @@ def runs_before(base):
             and all(m in known for m in p.name.split(SEP))]
 
 
+def dispersion_clouds(base):
+    """{configuration: (dispersion folder, its cloud)} of every
+    configuration run (or begun) under base, a group's members each with
+    its own cloud."""
+    out = {}
+    for d in runs_before(base):
+        ddir = d / "dispersion"
+        if ddir.is_dir():
+            for cloud, m in zip(clouds(d.name, "release", ()),
+                                members(d.name)):
+                out[m] = (ddir, cloud)
+    return out
+
+
 def twice(names, before=()):
     """Where a call's configurations and groups (names) would run a
     configuration twice, one line each: a configuration in two of names,

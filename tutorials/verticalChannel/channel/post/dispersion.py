@@ -33,17 +33,8 @@ SPAN = 10.0
 
 def runs(pname):
     """{configuration: (dispersion folder, its cloud)} of every
-    configuration run (or begun) under runs/PRESET, a group's members
-    each with its own cloud."""
-    out = {}
-    for d in groups.runs_before(TUTORIAL / "runs" / pname):
-        ddir = d / "dispersion"
-        if not ddir.is_dir():
-            continue
-        for cloud, m in zip(groups.clouds(d.name, "release", ()),
-                            groups.members(d.name)):
-            out[m] = (ddir, cloud)
-    return out
+    configuration run (or begun) under runs/PRESET."""
+    return groups.dispersion_clouds(TUTORIAL / "runs" / pname)
 
 
 def history(p, pname, span):
