@@ -29,6 +29,7 @@ from channel.plots.matrix import matrix_figure
 # picture: postprocess.picture for the callers of the report
 from channel.plots.profiles import picture, plots  # noqa: F401
 from channel.post.gridCheck import GRID_CHECK, grid_rows
+from channel.post import nearWall
 from channel.post.regression import R, regression
 from channel.post.report import compare, write_regression
 from channel.post.studyRuns import record_rows, study_runs
@@ -211,6 +212,8 @@ def post(pname, reference=False):
             fluid[f"{k[0]} agglomeration (the regime study's)"] = {
                 "uTauByUb": r["uTau"] / p["Ubar"], "gradient": None}
     rows = regression(p, res)
+    # the statements on where the particles are when agglomeration starts
+    rows += nearWall.concentration_rows(R, p)
     # C1's own run against the study's record of it, where both exist
     rows += record_rows(R, p, res)
     if pname in GRID_CHECK:
