@@ -3,6 +3,7 @@ each), channel.regime.analysis's concentration and rates between writes and
 the progress of an unfinished variant; the study's post-processing is
 tested on the smoke runs in post/test_channelSmokeOutputs.py."""
 
+import json
 import threading
 
 import numpy as np
@@ -311,3 +312,58 @@ def test_earlier_results_kept_beside_other_configurations(tmp_path):
         assert v[name]["from"] == str(earlier)
     assert v["regime32"]["result"] is None and "from" not in v["regime32"]
     assert "progress" in v["regime32"]
+
+
+def test_dropped_variant_said_and_not_run_by_default(monkeypatch,
+                                                     tmp_path, capsys):
+    """regime48n3 is dropped: the report says so with the reason where it
+    has no result, and with an earlier report keeps how far its runs had
+    come then (their folder gone); 'run' without names runs every variant
+    but it, by name it still runs; 'list' says it is dropped."""
+    regime = script("channel.regime.study")
+    report = script("channel.regime.report")
+    assert "regime48n3" in regime.DROPPED
+    runs = tmp_path / "runs"
+    (runs / "regime32" / "C1").mkdir(parents=True)
+    res = regime.run_post(runs, tmp_path / "out",
+                          names=["regime32", "regime48n3"])
+    v = {x["name"]: x for x in res["variants"]}
+    assert v["regime48n3"]["dropped"] == regime.DROPPED["regime48n3"]
+    assert "dropped" not in v["regime32"]
+    text = (tmp_path / "out" / "regime.txt").read_text()
+    assert f"regime48n3     dropped, not run in {runs / 'regime48n3'}; " \
+        f"{regime.DROPPED['regime48n3']}" in text
+    assert report._where(v["regime48n3"]).startswith("dropped, not run")
+    # no finished or growing variant: no picture, and the report written
+    assert not (tmp_path / "out" / "regime.png").exists()
+    earlier = tmp_path / "earlier.json"
+    begun = {"stages": {"C1/dispersion": {"lastWrite_Tstar": 280.0,
+                                          "end_Tstar": 860.0, "done": []}},
+             "history": [], "concentration": None, "agglomeration": {}}
+    earlier.write_text(json.dumps({"variants": [
+        {"name": "regime48n3", "result": None, "progress": begun}]}))
+    res = regime.run_post(runs, tmp_path / "out",
+                          names=["regime32", "regime48n3"],
+                          earlier=earlier)
+    v = {x["name"]: x for x in res["variants"]}
+    assert v["regime48n3"]["progress"] == begun
+    assert v["regime48n3"]["from"] == str(earlier)
+    assert "progress" not in v["regime32"] or \
+        v["regime32"]["progress"] != begun
+    assert report._where(v["regime48n3"]) == (
+        "dropped, not finished: C1/dispersion at T* 280 of 860; "
+        + regime.DROPPED["regime48n3"])
+    ran = []
+    monkeypatch.setattr(regime, "run_variants",
+                        lambda names, np_, j: ran.append(names) or 0)
+    monkeypatch.setattr(regime, "TUTORIAL", tmp_path)
+    assert regime.main(["channel.regime", "run"]) == 0
+    known = [n for n, _ in regime.VARIANTS]
+    assert ran[-1] == [n for n in known if n != "regime48n3"]
+    assert regime.main(["channel.regime", "run", "regime48n3"]) == 0
+    assert ran[-1] == ["regime48n3"]
+    capsys.readouterr()
+    assert regime.main(["channel.regime", "list"]) == 0
+    assert "regime48n3" in [ln.split()[0] for ln in
+                            capsys.readouterr().out.splitlines()
+                            if "(dropped: " in ln]

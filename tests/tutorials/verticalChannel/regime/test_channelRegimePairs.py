@@ -81,6 +81,21 @@ def test_pairs_not_yet_comparable_and_no_events(pairs):
     assert "f_agg x s^2 n/r (no events or no sigma)" in text
 
 
+def test_a_dropped_variant_is_named_so(pairs):
+    """A pair whose variant the study dropped is n/r saying so, a missing
+    base beside it still 'not finished'."""
+    rows = pairs.compare(
+        {"variants": [{"name": "regime48n3", "result": None,
+                       "dropped": "why"},
+                      {"name": "regime48", "result": None}]},
+        ("EAM",), "particleNumber")
+    p = [r for r in rows if r["variant"] == "regime48n3"][0]
+    assert p["dropped"] == ["regime48n3"]
+    text = "\n".join(pairs.lines(rows, ("EAM",), "particleNumber"))
+    assert "regime48n3 over regime48: n/r (regime48 not finished; " \
+        "regime48n3 dropped)" in text
+
+
 def test_phase_lengths(pairs):
     """The paper's phases over small's at one grid: regime64 over
     regime64short and regime32 over small. f_col x s^2 40,000 +- 2,000

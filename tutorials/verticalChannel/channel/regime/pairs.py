@@ -135,11 +135,14 @@ def compare(res, models, check):
     {"variant", "base", "missing": [names]}."""
     done = {v["name"]: v["result"] for v in res["variants"]
             if v["result"]}
+    dropped = [v["name"] for v in res["variants"] if v.get("dropped")]
     out = []
     for var, base in check_pairs(check):
         missing = [n for n in (var, base) if n not in done]
         if missing:
             out.append({"variant": var, "base": base, "missing": missing})
+            if set(missing) & set(dropped):
+                out[-1]["dropped"] = [n for n in missing if n in dropped]
             continue
         row = {"variant": var, "base": base, "nearWallOverCentre":
                [_near_wall(done[var]), _near_wall(done[base])]}
@@ -161,8 +164,11 @@ def lines(pairs, models, check):
     for p in pairs:
         head = f"  {p['variant']} over {p['base']}"
         if "missing" in p:
-            out.append(f"{head}: n/r ({', '.join(p['missing'])} not "
-                       "finished)")
+            gone = p.get("dropped", [])
+            why = [f"{', '.join(n for n in p['missing'] if n not in gone)}"
+                   " not finished"] if set(p["missing"]) - set(gone) else []
+            why += [f"{n} dropped" for n in gone]
+            out.append(f"{head}: n/r ({'; '.join(why)})")
             continue
         for m in models:
             parts = []

@@ -91,19 +91,23 @@ def table(res):
 
 
 def _where(v):
-    """How far a variant without results stands."""
+    """How far a variant without results stands (and why it stops there,
+    if the study dropped it)."""
     g = v.get("progress")
     if not g:
-        return f"not run in {v['runs']}"
-    parts = []
-    for folder, x in g["stages"].items():
-        at = x["lastWrite_Tstar"]
-        parts.append(f"{folder} at T* {_g(at, '.0f')} of "
-                     f"{x['end_Tstar']:.0f}"
-                     + (f" ({', '.join(x['done'])} done)" if x["done"]
-                        else ""))
-    return ("not finished: " + "; ".join(parts)
-            + (" (interim below)" if g["history"] else ""))
+        state = f"not run in {v['runs']}"
+    else:
+        parts = []
+        for folder, x in g["stages"].items():
+            at = x["lastWrite_Tstar"]
+            parts.append(f"{folder} at T* {_g(at, '.0f')} of "
+                         f"{x['end_Tstar']:.0f}"
+                         + (f" ({', '.join(x['done'])} done)" if x["done"]
+                            else ""))
+        state = ("not finished: " + "; ".join(parts)
+                 + (" (interim below)" if g["history"] else ""))
+    return f"dropped, {state}; {v['dropped']}" if v.get("dropped") \
+        else state
 
 
 def _history_lines(res, gap=40.0):

@@ -47,7 +47,7 @@ from channel.regime.analysis import (MODELS, PAPER, analyse_variant, progress,
                                    runs_base)
 from channel.regime.plots import plots
 from channel.regime.report import table
-from channel.regime.variants import VARIANTS
+from channel.regime.variants import DROPPED, VARIANTS
 
 
 def post_folder(runs=None, out=None, reference=False):
@@ -71,6 +71,14 @@ def earlier_results(path):
             if v.get("result")}
 
 
+def earlier_progress(path):
+    """The unfinished variants' progress of an earlier regime.json: name
+    -> progress (how far their runs had come then)."""
+    old = json.loads(Path(path).read_text())
+    return {v["name"]: v["progress"] for v in old.get("variants", [])
+            if not v.get("result") and v.get("progress")}
+
+
 def run_post(runs=None, out=None, names=None, reference=False,
              earlier=None):
     """The study's report of the variants under runs; with earlier (an
@@ -81,6 +89,7 @@ def run_post(runs=None, out=None, names=None, reference=False,
     matrix runs C2 and on at regime64 and regime48, with their unladen
     LES): the study is C1's."""
     kept = earlier_results(earlier) if earlier else {}
+    begun = earlier_progress(earlier) if earlier else {}
     runs_dir = Path(runs or TUTORIAL / "runs")
     if not runs_dir.is_dir():
         raise SystemExit(f"channel.regime post: no folder {runs_dir}")
@@ -104,6 +113,12 @@ def run_post(runs=None, out=None, names=None, reference=False,
             v["from"] = str(earlier)
         if v["result"] is None:
             v["progress"] = progress(name, runs)
+            if name in DROPPED:
+                v["dropped"] = DROPPED[name]
+                # a dropped variant's runs do not come back: how far they
+                # had come, as the earlier report had it
+                if v["progress"] is None and name in begun:
+                    v["progress"], v["from"] = begun[name], str(earlier)
         res["variants"].append(v)
     res["gridTrend"] = trend.grid_trend(res, MODELS, PAPER)
     res["gridTrendFinestPair"] = trend.finest_pair(res, MODELS, PAPER)
@@ -115,7 +130,12 @@ def run_post(runs=None, out=None, names=None, reference=False,
         (out / "regime.txt").write_text(table(res))
         plots(res, out)
         for f in ("regime.json", "regime.txt", "regime.png"):
-            os.replace(out / f, final / f)
+            if (out / f).is_file():
+                os.replace(out / f, final / f)
+            else:
+                # no picture without a finished or growing variant: none
+                # of an earlier post stays beside this report
+                (final / f).unlink(missing_ok=True)
     finally:
         shutil.rmtree(out, ignore_errors=True)
     print(table(res))
@@ -177,12 +197,15 @@ def main(argv):
             ap.error(f"unknown variant '{v}'; valid: {' '.join(known)}")
     if a.cmd == "list":
         for n, what in VARIANTS:
-            print(f"{n:14s} {what}")
+            print(f"{n:14s} {what}"
+                  + (f" (dropped: {DROPPED[n]})" if n in DROPPED else ""))
     elif a.cmd == "run":
         if a.runs and Path(a.runs).resolve() != (TUTORIAL / "runs").resolve():
             ap.error("run: the runs go to this tutorial's runs/; run the "
                      "study from a clone outside the work tree instead")
-        return run_variants(a.variants or known, a.np, a.j)
+        return run_variants(a.variants or [n for n in known
+                                           if n not in DROPPED],
+                            a.np, a.j)
     else:
         run_post(a.runs, a.out, a.variants or None, a.reference,
                  a.earlier)
