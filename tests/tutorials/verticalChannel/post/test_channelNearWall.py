@@ -118,11 +118,11 @@ def test_few_intervals(near):
                   [2.0] * 8 + [2 * v for v in C1[8:]])
     write_release(p, base / "C1" / "dispersion", "particles",
                   [1.0] * 8 + C1[8:])
-    mod.analysis.START_SPAN, keep = 6.0, mod.analysis.START_SPAN
+    mod.concentration.START_SPAN, keep = 6.0, mod.concentration.START_SPAN
     try:
         x = rows(mod, p)["statement c_w/c_0 C2/C1"]
     finally:
-        mod.analysis.START_SPAN = keep
+        mod.concentration.START_SPAN = keep
     assert x["sim"] == pytest.approx(2.0, rel=1e-9) and x["sigma"] is None
     assert x["status"] == "n/r" and "fewer than 4 intervals" in x["note"]
 

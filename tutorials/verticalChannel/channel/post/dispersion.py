@@ -12,7 +12,8 @@ variants C1sgs ... C2oneWay).
 Per configuration (a run alone, or a cloud of a group of one-way
 configurations) and per interval between writes at least `span` T*
 apart (the first from the release; T* absolute), from the cloud's
-stats.dat and profiles.dat (channel.regime.analysis.dispersion_history):
+stats.dat and profiles.dat
+(channel.post.concentration.dispersion_history):
 the wall impacts per particle and T* (the counter nWall), the collisions
 per T* scaled to the paper's particle number (x s^2; they rebound here,
 agglomeration starts later) and the particle volume fraction of the
@@ -24,8 +25,7 @@ import sys
 
 from channel import TUTORIAL
 from channel.case import groups, settings
-from channel.post import postprocess
-from channel.regime import analysis
+from channel.post import concentration, postprocess
 
 #: The interval of the table when none is given (T*)
 SPAN = 10.0
@@ -44,7 +44,7 @@ def history(p, pname, span):
         out[c] = {"subModels": settings.configuration(c)["subModels"],
                   "folder": str(ddir.relative_to(TUTORIAL)),
                   "cloud": cloud,
-                  "intervals": analysis.dispersion_history(
+                  "intervals": concentration.dispersion_history(
                       p, ddir, span, cloud)}
     return out
 

@@ -6,7 +6,7 @@ forces and the particle SGS model each) move particles out of the
 near-wall region, and so do rough walls (Sec. 5.3, 5.4). Each statement
 is a row of the regression: the ratio of two configurations' c_w/c_0,
 the particle volume fraction of the slabs next to the walls over the
-centre's (channel.regime.analysis.near_wall_over_centre), judged like
+centre's (channel.post.concentration.near_wall_over_centre), judged like
 the statements of Table D.6 (channel.post.statements: PASS where the
 stated direction holds beyond 3 sigma, FAIL where the opposite does,
 n/r in between).
@@ -32,9 +32,8 @@ from aggloTools import regression as reg
 
 from channel import TUTORIAL
 from channel.case import groups, settings
-from channel.post import statements
+from channel.post import concentration, statements
 from channel.post.studyRuns import same_settings, study_record
-from channel.regime import analysis
 
 #: The statements: the words, the configuration that should hold fewer
 #: particles near the walls and the one it is compared with
@@ -57,7 +56,7 @@ def window(p):
     agglomeration stage starts from."""
     t1 = settings.end_time(p, "dispersion") / p["tScale"]
     t0 = settings.end_time(p, "unladen") / p["tScale"]
-    return max(t0, t1 - analysis.START_SPAN), t1
+    return max(t0, t1 - concentration.START_SPAN), t1
 
 
 def batch_mean(p, intervals):
@@ -97,7 +96,7 @@ def concentrations(p, configs):
                 out[c] = f"{c}'s dispersion not finished"
                 continue
             pc = settings.preset(p["name"], c)
-            out[c] = batch_mean(pc, analysis.concentration_history(
+            out[c] = batch_mean(pc, concentration.concentration_history(
                 pc, ddir, pc["writeStar"], cloud)) or \
                 f"{c}: no concentration over the dispersion's end"
         elif c == "C1":

@@ -11,7 +11,8 @@ import numpy as np
 
 from channel.post.contacts import QUANTILES
 from channel.regime import pairs, trend, verdict
-from channel.regime.analysis import (MODELS, PAPER, START_SPAN, paper_alpha,
+from channel.post.concentration import START_SPAN
+from channel.regime.analysis import (MODELS, PAPER, paper_alpha,
                                      variant_history)
 
 

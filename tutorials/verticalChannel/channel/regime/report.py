@@ -7,7 +7,8 @@ phase lengths), the verdict and the interims
 from channel.regime import pairs
 from channel.regime import trend
 from channel.regime import verdict
-from channel.regime.analysis import MODELS, PAPER, START_SPAN, variant_history
+from channel.post.concentration import START_SPAN
+from channel.regime.analysis import MODELS, PAPER, variant_history
 
 
 def _g(v, fmt=".3g"):
