@@ -61,8 +61,9 @@ def window(p):
 
 def batch_mean(p, intervals):
     """c_w/c_0 over window(p) from intervals ({T0, T1,
-    nearWallOverCentre}, T* absolute): {value, sigma, n, T0, T1}; sigma
-    None with fewer than MIN_BATCHES intervals or an empty centre."""
+    nearWallOverCentre}, T* absolute): {value, sigma, n, T0, T1}, sigma
+    None with fewer than MIN_BATCHES intervals; None without an interval
+    or where one has an empty centre."""
     w0, w1 = window(p)
     tol = 1e-3 * p["writeStar"]
     x = [i for i in intervals
@@ -125,17 +126,15 @@ def concentration_rows(R, p):
             continue
         ca, cb = con[a], con[b]
         r = ca["value"] / cb["value"]
-        s = None
         few = [f"{k}: {x['n']}" for k, x in ((a, ca), (b, cb))
                if x["sigma"] is None]
-        if not few:
-            s = r * math.hypot(ca["sigma"] / ca["value"],
-                               cb["sigma"] / cb["value"])
         if few:
-            status, note = reg.NR, (
+            s, status, note = None, reg.NR, (
                 f"fewer than {MIN_BATCHES} intervals give no sigma ("
                 + ", ".join(few) + ")")
         else:
+            s = r * math.hypot(ca["sigma"] / ca["value"],
+                               cb["sigma"] / cb["value"])
             status, note = statements.direction_status(r, s, -1)
         rows.append(R(name, r, s, None,
                       None if s is None
