@@ -249,7 +249,7 @@ def test_earlier_results_kept_beside_other_configurations(tmp_path):
     (runs / "regime32" / "C1" / "dispersion").mkdir(parents=True)
     res = regime.run_post(runs, tmp_path / "out", earlier=earlier)
     v = {x["name"]: x for x in res["variants"]}
-    kept = regime.earlier_results(earlier)
+    kept = regime.earlier_results(regime.earlier_variants(earlier))
     for name in ("regime64", "regime48", "small"):
         assert v[name]["result"] == kept[name]
         assert v[name]["from"] == str(earlier)

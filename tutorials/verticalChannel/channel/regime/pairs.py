@@ -141,8 +141,9 @@ def compare(res, models, check):
         missing = [n for n in (var, base) if n not in done]
         if missing:
             out.append({"variant": var, "base": base, "missing": missing})
-            if set(missing) & set(dropped):
-                out[-1]["dropped"] = [n for n in missing if n in dropped]
+            gone = [n for n in missing if n in dropped]
+            if gone:
+                out[-1]["dropped"] = gone
             continue
         row = {"variant": var, "base": base, "nearWallOverCentre":
                [_near_wall(done[var]), _near_wall(done[base])]}
@@ -165,9 +166,9 @@ def lines(pairs, models, check):
         head = f"  {p['variant']} over {p['base']}"
         if "missing" in p:
             gone = p.get("dropped", [])
-            why = [f"{', '.join(n for n in p['missing'] if n not in gone)}"
-                   " not finished"] if set(p["missing"]) - set(gone) else []
-            why += [f"{n} dropped" for n in gone]
+            left = [n for n in p["missing"] if n not in gone]
+            why = ([f"{', '.join(left)} not finished"] if left else []) \
+                + [f"{n} dropped" for n in gone]
             out.append(f"{head}: n/r ({'; '.join(why)})")
             continue
         for m in models:

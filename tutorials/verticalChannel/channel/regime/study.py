@@ -60,22 +60,25 @@ def post_folder(runs=None, out=None, reference=False):
     return Path(runs or TUTORIAL / "runs") / "report-regime"
 
 
-def earlier_results(path):
-    """The finished variants' results of an earlier regime.json: name ->
-    result (a missing or unreadable file stops naming it)."""
+def earlier_variants(path):
+    """The variants of an earlier regime.json (a missing or unreadable
+    file stops naming it)."""
     try:
-        old = json.loads(Path(path).read_text())
+        return json.loads(Path(path).read_text()).get("variants", [])
     except (OSError, ValueError) as e:
         raise SystemExit(f"channel.regime post: --earlier {path}: {e}")
-    return {v["name"]: v["result"] for v in old.get("variants", [])
-            if v.get("result")}
 
 
-def earlier_progress(path):
-    """The unfinished variants' progress of an earlier regime.json: name
-    -> progress (how far their runs had come then)."""
-    old = json.loads(Path(path).read_text())
-    return {v["name"]: v["progress"] for v in old.get("variants", [])
+def earlier_results(variants):
+    """The finished variants' results of earlier_variants: name ->
+    result."""
+    return {v["name"]: v["result"] for v in variants if v.get("result")}
+
+
+def earlier_progress(variants):
+    """The unfinished variants' progress of earlier_variants: name ->
+    progress (how far their runs had come then)."""
+    return {v["name"]: v["progress"] for v in variants
             if not v.get("result") and v.get("progress")}
 
 
@@ -88,8 +91,8 @@ def run_post(runs=None, out=None, names=None, reference=False,
     run before. Its folder may hold other configurations (the Table D.6
     matrix runs C2 and on at regime64 and regime48, with their unladen
     LES): the study is C1's."""
-    kept = earlier_results(earlier) if earlier else {}
-    begun = earlier_progress(earlier) if earlier else {}
+    before = earlier_variants(earlier) if earlier else []
+    kept, begun = earlier_results(before), earlier_progress(before)
     runs_dir = Path(runs or TUTORIAL / "runs")
     if not runs_dir.is_dir():
         raise SystemExit(f"channel.regime post: no folder {runs_dir}")
