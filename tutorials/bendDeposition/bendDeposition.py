@@ -12,8 +12,12 @@ left. The preset `agglomeration` is the dense variant: one run of
 polydisperse primaries with the collision stage and EAM agglomeration on
 (bendAgglomeration.py).
 
-    ./Allrun [-preset default|ci|agglomeration] [-np N] [-j N] [-post]
+    ./Allrun [-preset default|coarseWall|mediumWall|fineWall|ci|
+                      agglomeration] [-np N] [-j N] [-post]
              [-reference] [-every S]
+
+coarseWall, mediumWall and fineWall: the study of the wall-normal
+resolution (README.md), default's pipe with other ring blocks.
 
 St = rho_p d_p^2 U / (9 mu D) = tau_p U / a (tau_p = rho_p d_p^2 / (18
 mu), U the mean velocity, D = 2a the pipe diameter; no slip correction).
@@ -32,7 +36,9 @@ Runs: runs/<preset>[-np<N>]/flow and .../St<St> (a finished run is
 kept; an interrupted one continues from its last complete write; one
 driver at a time per preset). Report: <runs>/report (-reference:
 results/<preset>[-np<N>]): summary.json, table.txt, efficiency.png,
-deposits.png. Exit status 1 if a row FAILs."""
+deposits.png. Exit status 1 if a row FAILs its gate (the balance, the
+theory's limits, the serial counts); the comparison with Pui et al.'s
+measurements (bendMeasured) is a column of its own, a result."""
 
 import json
 import math
@@ -49,6 +55,7 @@ from aggloTools.times import last_time
 
 import bendAgglomeration
 import bendEfficiency
+import bendMeasured
 from bendPlots import deposits_plot, efficiency_plot
 
 HERE = Path(__file__).resolve().parent
@@ -68,13 +75,38 @@ TRANSITS = 6
 CI_PIPE = dict(n=6, n_ring=4, grading=0.3, n_axial=(6, 24, 6),
                curvature=5.6, straight=1.5, dt=1e-4, flow_end=0.03)
 
+#: The wall-normal resolution (README.md, "The wall-normal resolution"):
+#: ring cells and their grading (last over first) by the wall cell's
+#: thickness, about 4 um in `default`, converged against 1.5 um
+WALL = {"coarseWall": (6, 0.3),      # about 100 um: the earlier default
+        "mediumWall": (12, 0.05),    # about 15 um
+        "default": (24, 0.02),       # about 4 um
+        "fineWall": (36, 0.01)}      # about 1.5 um
+#: The default pipe, its particles and its run, but the ring
+PIPE = dict(n=8, n_axial=(10, 48, 10), curvature=5.6, straight=2.0,
+            parcels=2000, dt=5e-5, flow_end=0.04, inject=0.01)
+#: The Stokes numbers of default, and of the resolution study: where
+#: the coarse wall and the measurements part
+STOKES = [0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.5]
+STUDY = [0.1, 0.2, 0.3, 0.45]
+
+
+def ring(name):
+    """A preset's ring entries from WALL."""
+    return dict(n_ring=WALL[name][0], grading=WALL[name][1])
+
+
 PRESETS = {
-    # about 6 minutes on 2 cores
-    "default": dict(stokes=[0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.5],
-                    n=8, n_ring=6, n_axial=(10, 48, 10), grading=0.3,
-                    curvature=5.6,
-                    straight=2.0, parcels=2000, dt=5e-5, flow_end=0.04,
-                    inject=0.01),
+    # about 10 minutes on 2 cores
+    "default": dict(stokes=STOKES, **ring("default"), **PIPE),
+    # the resolution study's other walls: the earlier default as it was,
+    # the finer two at STUDY for 12 transits, as the particles next to
+    # the wall move slower where it is resolved
+    "coarseWall": dict(stokes=STOKES, **ring("coarseWall"), **PIPE),
+    "mediumWall": dict(stokes=STUDY, transits=12, **ring("mediumWall"),
+                       **PIPE),
+    "fineWall": dict(stokes=STUDY, transits=12, **ring("fineWall"),
+                     **PIPE),
     # the tests' preset, the limits: about 1 minute
     "ci": dict(stokes=[0.02, 0.3, 5.0], parcels=300, inject=0.005,
                **CI_PIPE),
@@ -160,8 +192,9 @@ def build_flow(case, p):
 
 
 def run_end(p):
-    """A particle run's end: the injection and TRANSITS transits."""
-    return p["inject"] + TRANSITS * transit(p)
+    """A particle run's end: the injection and the preset's transits
+    (TRANSITS where it names none)."""
+    return p["inject"] + p.get("transits", TRANSITS) * transit(p)
 
 
 def build_particles(case, flow, p, sizes, model, ranks):
@@ -292,7 +325,8 @@ def verdicts(rows, p, serial):
     bendEfficiency.judge(rows)
     if serial is not False:
         bendEfficiency.compare(rows, serial)
-    return bendEfficiency.table(rows)
+    bendMeasured.compare(rows, RE, p["curvature"])
+    return bendEfficiency.table(rows, bendMeasured.summary(rows))
 
 
 def simulate(a, p, base, cases):
@@ -347,7 +381,9 @@ def work(a):
     (out / "table.txt").write_text(text)
     g = geometry(p)
     if "stokes" in p:
-        efficiency_plot(rows, g, out)
+        efficiency_plot(rows, g, out, bendMeasured.eta_pui if not
+                        bendMeasured.not_applicable(RE, p["curvature"])
+                        else None)
     shown = list(cases.values())[len(cases) // 2]
     deposits_plot(shown, "the agglomeration variant" if "sizes" in p
                   else f"St = {shown.name[2:]}", out)

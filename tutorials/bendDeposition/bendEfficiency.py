@@ -62,14 +62,14 @@ def analyse(case, st, d, p, g):
 
 
 def judge(rows):
-    """The theory's limits (no measurement is in doc/ yet, README.md):
-    the preset's parcels injected and at most 2 % undecided (in flight
-    before the end of the bend: left out of eta); eta does not fall from
-    one St to the next by more than 2 sigma (both rows' binomial sigma
-    combined); the smallest St below 0.1 deposits less than 10 %, the
-    largest above 3 more than 90 % (the inertial limits: tracers follow
-    the flow, ballistic particles hit the outer wall). Each row PASS or
-    FAIL."""
+    """The gate, the theory's limits (the measurements are compared by
+    bendMeasured, not here): the preset's parcels injected and at most
+    2 % undecided (in flight before the end of the bend: left out of
+    eta); eta does not fall from one St to the next by more than 2 sigma
+    (both rows' binomial sigma combined); the smallest St below 0.1
+    deposits less than 10 %, the largest above 3 more than 90 % (the
+    inertial limits: tracers follow the flow, ballistic particles hit
+    the outer wall). Each row PASS or FAIL."""
     verdicts = {}
     for r in rows:
         ok = (r["undecided"] <= 0.02 * r["injected"] and r["entered"] > 0
@@ -113,9 +113,15 @@ def compare(rows, serial, key="St", same=SAME):
     return rows
 
 
-def table(rows):
+def table(rows, measured=None):
+    """The report's table; `measured`: the line on the comparison with
+    the measurements (bendMeasured.summary), whose columns (the
+    expression's eta and the row's verdict against it) follow the
+    gate's verdict where the rows have them."""
+    vs = any("measured" in r for r in rows)
     out = ["    St   d [um]  injected  entered  bend  inletPipe  "
-           "outletPipe  outlet  flight     eta   sigma  verdict"]
+           "outletPipe  outlet  flight     eta   sigma  verdict"
+           + ("    Pui87  measured" if vs else "")]
     for r in rows:
         dep, esc = r["deposited"], r["escaped"]
         out.append(f"{r['St']:6.3g} {1e6 * r['d']:8.2f} {r['injected']:9d}"
@@ -124,13 +130,17 @@ def table(rows):
                    f" {dep.get('outletPipe', 0):11d}"
                    f" {esc.get('outlet', 0):7d} {r['inFlight']:7d}"
                    f" {r['eta']:7.3f}"
-                   f" {r['sigma']:7.3f}  {r['verdict']}"
+                   f" {r['sigma']:7.3f}  {r['verdict']:>7}"
+                   + (f"  {r['etaPui']:7.3f}  {r['measured']}"
+                      if "etaPui" in r else
+                      f"  {'-':>7}  {r['measured']}" if vs else "")
                    + (f"  (serial: {r['serial']})" if "serial" in r else ""))
     out.append("eta: deposited in the bend / entered the bend (flight: "
                "still in the pipe at the end; those in the outlet pipe "
                "passed the bend, the others are left out); sigma: binomial. "
-               "Verdicts: the balance and the theory's limits (no "
-               "measurement in doc/ yet: README.md)"
+               "Verdicts: the balance and the theory's limits"
                + ("; on N ranks also the serial run's counts exactly."
                   if any("serial" in r for r in rows) else "."))
+    if measured:
+        out.append(measured)
     return "\n".join(out) + "\n"

@@ -11,6 +11,8 @@ from aggloTools.fields import read_patch
 from aggloTools.mesh import Mesh
 from aggloTools.times import last_time
 
+from bendMeasured import BAND
+
 
 def _patch_faces(case, patch):
     text = (case / "constant/polyMesh/boundary").read_text()
@@ -26,13 +28,22 @@ def _pyplot():
     return plt
 
 
-def efficiency_plot(rows, g, out):
-    """efficiency.png: eta against St with the binomial sigma."""
+def efficiency_plot(rows, g, out, measured=None):
+    """efficiency.png: eta against St with the binomial sigma, and
+    `measured(St)` (Pui et al.'s laminar expression, bendMeasured) with
+    its band where given."""
     plt = _pyplot()
     st = np.array([r["St"] for r in rows])
     eta = np.array([r["eta"] for r in rows])
     sig = np.array([r["sigma"] for r in rows])
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    if measured is not None:
+        s = np.geomspace(st.min(), st.max(), 200)
+        m = np.array([measured(x) for x in s])
+        ax.fill_between(s, np.clip(m - BAND, 0, 1),
+                        np.clip(m + BAND, 0, 1), color="0.85",
+                        label=f"band of the rows (+-{BAND:g})")
+        ax.plot(s, m, "k--", label="Pui et al. (1987), laminar expression")
     ax.errorbar(st, eta, yerr=sig, fmt="o-", capsize=3,
                 label="this model (binomial sigma)")
     ax.set_xscale("log")

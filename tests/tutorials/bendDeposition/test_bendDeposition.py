@@ -1,7 +1,8 @@
 """tutorials/bendDeposition: the Stokes number's diameter against the hand
 formula, the gates' verdicts on made-up rows (each limit fails when it
 should: the theory's limits, the serial comparison, the agglomeration
-variant's checks), the `ci` preset run end to end in a copy of the
+variant's checks), Pui et al.'s expression at its hand values and the
+comparison's verdicts, the `ci` preset run end to end in a copy of the
 tutorial, serial then on 2 ranks (about 45 s): exit status 0, every row
 PASS, the counts from the mass balance adding up to the injected
 particles, the 2-rank counts equal to the serial ones, the pictures
@@ -20,6 +21,7 @@ TUT = project_dir() / "tutorials" / "bendDeposition"
 efficiency = tutorial_module("bendDeposition", "bendEfficiency")
 agglomeration = tutorial_module("bendDeposition", "bendAgglomeration")
 driver = tutorial_module("bendDeposition", "bendDeposition")
+measured = tutorial_module("bendDeposition", "bendMeasured")
 
 
 def test_stokes_number_diameter():
@@ -76,6 +78,52 @@ def test_serial_comparison_gate():
     assert alone["verdict"] == "PASS" and alone["serial"].startswith("n/r")
 
 
+def test_pui_expression_hand_values():
+    """Pui et al.'s laminar expression (doc/bendDeposition.md, 2) at the
+    hand values: x = St/0.171 = 1 gives P = 1/2 for 90 degrees and 2^-2
+    for 180 degrees, whatever the exponent; x = 2 checks the exponent's
+    coefficients (2^3.146 = 8.852); St = 0 deposits nothing; a negative
+    St is refused."""
+    assert measured.eta_pui(0.171) == pytest.approx(0.5, rel=1e-14)
+    assert measured.eta_pui(0.171, angle=math.pi) == pytest.approx(
+        0.75, rel=1e-14)
+    # x = 2: the exponent 0.452 * 2 + 2.242 = 3.146 by hand
+    assert measured.eta_pui(0.342) == pytest.approx(
+        1 - 1 / (1 + 2 ** 3.146), rel=1e-12)
+    assert measured.eta_pui(0.342) == pytest.approx(8.852 / 9.852,
+                                                    abs=1e-4)
+    assert measured.eta_pui(0.0) == 0.0
+    assert measured.eta_pui(0.05) == pytest.approx(0.051, abs=5e-4)
+    assert measured.eta_pui(1.0) == pytest.approx(1.0, abs=5e-4)
+    with pytest.raises(ValueError, match="St -0.1"):
+        measured.eta_pui(-0.1)
+
+
+def test_measured_verdicts():
+    """A row within 0.1 + 3 sigma of the expression PASSes, one beyond
+    FAILs, on either side; a bend other than Pui et al.'s (Re, R/a)
+    prints n/r with the reason; the summary counts and names the rows
+    outside; the gate's verdict is left as it was."""
+    # St 0.171: eta_Pui = 0.5; n = 1000: sigma(0.62) = 0.01535
+    near = dict(row(0.171, 0.62), verdict="PASS")
+    far = dict(row(0.171, 0.66), verdict="PASS")
+    low = dict(row(0.171, 0.34), verdict="PASS")
+    rows = measured.compare([near, far, low], 1000, 5.6)
+    assert [r["measured"] for r in rows] == ["PASS", "FAIL", "FAIL"]
+    assert all(r["verdict"] == "PASS" for r in rows)
+    assert rows[0]["etaPui"] == pytest.approx(0.5)
+    line = measured.summary(rows)
+    assert "1 of 3 within" in line and "outside: St 0.171, 0.171" in line
+    for re_, curv, why in ((6000, 5.6, "Re 6000"), (1000, 10, "R/a 10")):
+        r = measured.compare([row(0.171, 0.5)], re_, curv)[0]
+        assert r["measured"].startswith("n/r") and why in r["measured"]
+        assert "etaPui" not in r
+    assert measured.summary([r]) is None
+    text = efficiency.table([dict(near, d=5e-6, deposited={},
+                                  escaped={})], measured.summary([near]))
+    assert "Pui87" in text and "0.500  PASS" in text
+
+
 def agg_row(**kw):
     r = dict(injected=100, accounted=100, nAgg=3, deposited={"bend": 40},
              depositedPrimaries={"bend": 43})
@@ -123,6 +171,10 @@ def test_ci_preset_end_to_end(tmp_path, foam_env):
         assert 0 <= r["undecided"] <= r["inFlight"]
         assert r["eta"] == pytest.approx(
             r["deposited"].get("bend", 0) / r["entered"], rel=1e-12)
+        # compared with Pui et al.'s expression (R/a 5.6, Re 1000)
+        assert r["etaPui"] == measured.eta_pui(r["St"])
+        assert r["measured"] == ("PASS" if abs(r["eta"] - r["etaPui"])
+                                 <= 0.1 + 3 * r["sigma"] else "FAIL")
     for png in ("efficiency.png", "deposits.png"):
         assert (out / png).stat().st_size > 10000
     # a second call keeps the finished runs and writes the same report
