@@ -97,7 +97,7 @@ def ring(name):
 
 
 PRESETS = {
-    # about 10 minutes on 2 cores
+    # about 8 minutes on 2 cores
     "default": dict(stokes=STOKES, **ring("default"), **PIPE),
     # the resolution study's other walls: the earlier default as it was,
     # the finer two at STUDY for 12 transits, as the particles next to
