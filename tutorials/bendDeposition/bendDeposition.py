@@ -12,12 +12,13 @@ left. The preset `agglomeration` is the dense variant: one run of
 polydisperse primaries with the collision stage and EAM agglomeration on
 (bendAgglomeration.py).
 
-    ./Allrun [-preset default|coarseWall|mediumWall|fineWall|ci|
-                      agglomeration] [-np N] [-j N] [-post]
-             [-reference] [-every S]
+    ./Allrun [-preset default|coarseWall|mediumWall|fineWall|
+                      fineSection|finerSection|ci|agglomeration]
+             [-np N] [-j N] [-post] [-reference] [-every S]
 
-coarseWall, mediumWall and fineWall: the study of the wall-normal
-resolution (README.md), default's pipe with other ring blocks.
+coarseWall, mediumWall, fineWall, fineSection and finerSection: the
+study of the resolution (README.md, "The resolution"), default's pipe
+with other ring blocks or more cells across the section.
 
 St = rho_p d_p^2 U / (9 mu D) = tau_p U / a (tau_p = rho_p d_p^2 / (18
 mu), U the mean velocity, D = 2a the pipe diameter; no slip correction).
@@ -75,7 +76,7 @@ TRANSITS = 6
 CI_PIPE = dict(n=6, n_ring=4, grading=0.3, n_axial=(6, 24, 6),
                curvature=5.6, straight=1.5, dt=1e-4, flow_end=0.03)
 
-#: The wall-normal resolution (README.md, "The wall-normal resolution"):
+#: The wall-normal resolution (README.md, "The resolution"):
 #: ring cells and their grading (last over first) by the wall cell's
 #: thickness, about 4 um in `default`, converged against 1.5 um
 WALL = {"coarseWall": (6, 0.3),      # about 100 um: the earlier default
@@ -107,6 +108,12 @@ PRESETS = {
                        **PIPE),
     "fineWall": dict(stokes=STUDY, transits=12, **ring("fineWall"),
                      **PIPE),
+    # and default's wall with 12 (fineSection) or 16 (finerSection) in
+    # place of 8 cells across the core and along each quarter of the
+    # wall
+    **{name: dict(stokes=STUDY, transits=12, **ring("default"),
+                  **dict(PIPE, n=n))
+       for name, n in (("fineSection", 12), ("finerSection", 16))},
     # the tests' preset, the limits: about 1 minute
     "ci": dict(stokes=[0.02, 0.3, 5.0], parcels=300, inject=0.005,
                **CI_PIPE),
