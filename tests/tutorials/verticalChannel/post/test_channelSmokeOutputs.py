@@ -163,3 +163,34 @@ def test_matrix_figure(smoke_runs, tmp_path):
         assert s == pytest.approx(r["sigma_col"] * r["scale"])
         assert paper == channel.TABLE_D6["C1"]["fcol"][m]
         assert [q[0] for q in pts["agg"][m]] == ["C1", "C2"]
+
+
+def test_allrun_reports_the_dispersion(smoke_runs):
+    """./Allrun writes channel.post.dispersion's report beside the
+    regression: each configuration run, from its own dispersion case, one
+    interval from the release to the end of the dispersion stage (smoke's
+    presets entry: unladen 0.2 T*, no release phase, dispersion 0.2 T*:
+    T* 0.2 to 0.4), the near-wall concentration of the just released
+    uniform cloud within 3 sigma of the centre's (Poisson, 16 bins), and
+    the serial and 2-rank runs alike."""
+    reports = {}
+    for n in (1, 2):
+        rep = smoke_runs[n] / "runs" / "smoke" / "report"
+        r = json.loads((rep / "dispersion.json").read_text())["runs"]
+        assert sorted(r) == ["C1", "C2"]
+        text = (rep / "dispersion.txt").read_text()
+        for c in ("C1", "C2"):
+            assert r[c]["folder"] == f"runs/smoke/{c}/dispersion"
+            (x,) = r[c]["intervals"]
+            assert (x["T0"], x["T1"]) == pytest.approx((0.2, 0.4),
+                                                       rel=1e-9)
+            assert any(ln.startswith(f"{c} ") for ln in text.splitlines())
+        reports[n] = r
+    nb = 16
+    per_slab = N_RELEASED / nb
+    sigma = math.sqrt(1 / (2 * per_slab) + 1 / (nb / 4 * per_slab))
+    for c in ("C1", "C2"):
+        cw = [reports[n][c]["intervals"][0]["nearWallOverCentre"]
+              for n in (1, 2)]
+        assert abs(cw[0] - 1) < 3 * sigma
+        assert cw[1] == pytest.approx(cw[0], rel=1e-12)

@@ -52,11 +52,11 @@ which only -reference rewrites); the VTK files of
 the last time are under runs/<preset>/<config>/.../VTK (foamToVTK);
 channel.post.replay replays the agglomeration stages' collision-event logs
 (replay.json, replay.txt, alphaReplay<config><cloud>.png).
+channel.post.dispersion reports how each configuration's particles reach
+the walls in its release and dispersion (dispersion.txt, dispersion.json;
+nothing for a preset that branches from another's dispersion).
 A preset with break-up: channel.post.breakup (breakup.txt, breakup.json,
 breakupHistory.png, breakupSizes.png).
-Not run by Allrun: python -m channel.post.dispersion PRESET (how each
-configuration's particles reach the walls in its release and dispersion:
-dispersion.txt, dispersion.json).
 Ctrl-C stops every run it started (exit status 130).
 Run times on the 2-core development machine: README.md.
 """
@@ -338,6 +338,11 @@ def work(a):
     print(flush=True)
     if subprocess.call([sys.executable, "-m", "channel.post.replay", a.preset,
                         *ref]):
+        status = 1
+    # How the particles reached the walls before the agglomeration stage
+    print(flush=True)
+    if subprocess.call([sys.executable, "-m", "channel.post.dispersion",
+                        a.preset, *ref]):
         status = 1
     # The break-ups, where the preset breaks agglomerates
     if settings.preset(a.preset)["breakup"] != "none":
