@@ -22,9 +22,9 @@ def oracle_cloud(case_dir, kind, decompose=(1, 1, 1)):
     fast: about one cell per step), 'fast' (the gas with one particle in
     ten ten times faster: its box spans many bins of the others' size),
     'stream' (four gases side by side in a box 4 x 1 x 1, streaming at
-    +3 m/s along x, one particle in ten at +2 m/s: per step they move
-    more than a quarter of the short y and z periods, which only the
-    per-axis reach check admits), 'wall' (periodic in x and z, packed
+    +3 m/s along x for 20 steps, one particle in ten at +2 m/s: per step
+    they move more than a quarter of the short y and z periods, which
+    only the per-axis reach check admits), 'wall' (periodic in x and z, packed
     against the lower wall, EAM),
     'poly' (diameters 12-60 um, agglomerates of up to 125 primaries,
     periodic in x and z, EAM)."""
@@ -44,7 +44,7 @@ def oracle_cloud(case_dir, kind, decompose=(1, 1, 1)):
                 parts.append(p)
         box_case(case_dir, L=(4 * Lb, Lb, Lb), n=(20, 5, 5),
                  kinds=("cyclic",) * 3, particles=parts, dt=2e-5,
-                 end_time=1.2e-3, write_interval=1,
+                 end_time=4e-4, write_interval=1,
                  hard_sphere=gas_kernel(0.9), decompose=decompose)
         return
     if kind in ("gas", "fast"):
@@ -85,7 +85,12 @@ def search_checks(case_dir):
         r"pairSearchCheck: (\d+) candidate pairs, identical", text)]
 
 
-# The fast and stream boxes take 1-3 minutes each on 2 cores: -m slow
+# The fast and stream boxes, the slowest of the suite (the O(N^2) search
+# over 1,600 particles and 27 images is most of a stream step): 2-4.5
+# minutes each beside three long runs, -m slow. The stream runs 20 steps
+# (1,395 collisions, 64,350 candidate pairs checked serially): 60 steps
+# checked no more of the per-axis reach, which every step exercises,
+# for three times the CPU time (about 10 minutes of CI)
 SLOW = pytest.mark.slow
 
 
