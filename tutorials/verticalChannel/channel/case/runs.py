@@ -330,26 +330,21 @@ def work(a):
         if status:
             return status
 
-    ref = ["--reference"] if a.reference else []
-    print(flush=True)
-    status = subprocess.call([sys.executable, "-m", "channel.post", a.preset,
-                              *ref])
-    # The collision-event logs replayed through EAM and MAM at three e_n
-    print(flush=True)
-    if subprocess.call([sys.executable, "-m", "channel.post.replay", a.preset,
-                        *ref]):
-        status = 1
-    # How the particles reached the walls before the agglomeration stage
-    print(flush=True)
-    if subprocess.call([sys.executable, "-m", "channel.post.dispersion",
-                        a.preset, *ref]):
-        status = 1
-    # The break-ups, where the preset breaks agglomerates
+    # The regression, the collision-event logs replayed through EAM and
+    # MAM at three e_n, how the particles reached the walls before the
+    # agglomeration stage and, where the preset breaks agglomerates, the
+    # break-ups; the regression's status, or 1 if another report failed
+    reports = ["channel.post", "channel.post.replay",
+               "channel.post.dispersion"]
     if settings.preset(a.preset)["breakup"] != "none":
+        reports.append("channel.post.breakup")
+    ref = ["--reference"] if a.reference else []
+    rcs = []
+    for module in reports:
         print(flush=True)
-        if subprocess.call([sys.executable, "-m", "channel.post.breakup",
-                            a.preset, *ref]):
-            status = 1
+        rcs.append(subprocess.call([sys.executable, "-m", module, a.preset,
+                                    *ref]))
+    status = 1 if any(rcs[1:]) else rcs[0]
     report = f"results/{a.preset}" if a.reference \
         else f"runs/{a.preset}/report"
     print()
