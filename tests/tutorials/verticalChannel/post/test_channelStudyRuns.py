@@ -75,7 +75,8 @@ def test_no_record_of_the_preset(mods):
     ("dtStar", 0.02, "dtStar"),
     ("nParticles", 300000, "nParticles"),
     ("phases", [240, 100, 400, 200], "phases"),
-    ("grid", [64, 128, 64], "grid")])
+    ("grid", [64, 128, 64], "grid"),
+    ("UTolerance", 1e-6, "UTolerance")])
 def test_record_of_other_settings_refused(mods, tmp_path, key, value,
                                           named):
     """A record whose settings are not the preset's (changed here in a
@@ -151,3 +152,25 @@ def test_no_comparison_without_both(mods, tmp_path):
     assert len(rows) == 4
     assert all(r["status"] == "n/r" and "other dtStar: not comparable"
                in r["note"] for r in rows)
+
+
+def test_record_without_tolerance_is_the_studys(mods):
+    """The committed records predate the UTolerance entry; every run of
+    the study solved U to 1e-8. So `small`'s record (the study's small,
+    U to 1e-8) is not the preset `small` of today (U to 1e-6): its C1 is
+    refused naming the tolerance, and the preset's own C1 run is not
+    compared with it (n/r) where a FAIL would say the physics changed;
+    regime64's record (1e-8, as its preset) is still taken."""
+    study, reg, channel = mods
+    p = channel.preset("small")
+    assert p["UTolerance"] == 1e-6
+    assert "UTolerance" not in record(study, "small")["result"]
+    with pytest.raises(SystemExit) as e:
+        study.study_runs(p, {})
+    assert "made with other UTolerance than presets/small" in str(e.value)
+    _, res = own_runs(study, channel)
+    rows = study.record_rows(reg.R, p, res)
+    assert len(rows) == 4
+    assert all(r["status"] == "n/r" and "other UTolerance: not comparable"
+               in r["note"] for r in rows)
+    assert len(study.study_runs(channel.preset("regime64"), {})) == 2

@@ -30,6 +30,10 @@ from aggloTools import uncertainty
 #: The study's committed record
 STUDY = TUTORIAL / "results" / "regime" / "regime.json"
 MODELS = ("EAM", "MAM")
+#: The velocity solver's tolerance of a record that does not name its own:
+#: every run of the study solved U to 1e-8 (README.md, 'The regime study';
+#: its presets' UTolerance), and its first records predate the entry
+STUDY_U_TOLERANCE = 1e-8
 
 
 def study_record(name, path=STUDY):
@@ -45,14 +49,20 @@ def study_record(name, path=STUDY):
 
 def same_settings(p, result):
     """The entries in which the study's result was made otherwise than
-    the preset p's C1 runs would be now ([] if none)."""
+    the preset p's C1 runs would be now ([] if none). The velocity
+    solver's tolerance counts: a run at another tolerance is another
+    flow, so another run (a record without the entry was made at the
+    study's STUDY_U_TOLERANCE)."""
     now = {"grid": list(p["n"]), "dtStar": p["dtStar"],
            "nParticles": p["nParticles"],
            "phases": [p[k] for k in ("unladen", "release", "dispersion",
                                      "agglomeration")],
-           "window": [float(w) for w in p["window"]]}
+           "window": [float(w) for w in p["window"]],
+           "UTolerance": p["UTolerance"]}
+    made = dict(result)
+    made.setdefault("UTolerance", STUDY_U_TOLERANCE)
     return sorted(k for k, v in now.items()
-                  if [float(x) for x in _list(result.get(k))]
+                  if [float(x) for x in _list(made.get(k))]
                   != [float(x) for x in _list(v)])
 
 

@@ -190,7 +190,7 @@ def analyse_variant(name, runs=None):
         return None
     w0, w1 = p["window"]
     out = {"variant": name, "grid": p["n"], "dtStar": p["dtStar"],
-           "nParticles": p["nParticles"],
+           "nParticles": p["nParticles"], "UTolerance": p["UTolerance"],
            "phases": [p[k] for k in ("unladen", "release", "dispersion",
                                      "agglomeration")],
            "window": [w0, w1], "scale_s2": (settings.N_PAPER
