@@ -4,10 +4,11 @@ ran C1 of its variants and committed their window's numbers; where a
 preset's runs hold no C1 of their own (the study's folders were not
 kept), its report takes C1's rows from the study's record of the same
 preset, if that record was made with the settings the preset has now
-(grid, step, particles, phases, window). What the record lacks is said,
-not made up: no time histories or profiles (the runs' files), no
-conservation check (done in the study's run), no binomial sigma of the
-cumulative alpha at the end (its collision count is not recorded).
+(grid, step, particles, phases, window, the velocity tolerance). What
+the record lacks is said, not made up: no time histories or profiles
+(the runs' files), no conservation check (done in the study's run), no
+binomial sigma of the cumulative alpha at the end (its collision count
+is not recorded).
 
     res.update(study_runs(p, res))      # C1 of the study, where missing
     rows += record_rows(R, p, res)      # C1's own run against the record
