@@ -142,11 +142,18 @@ def test_c1_from_the_study_record(near, monkeypatch):
               "nParticles": pc["nParticles"],
               "phases": [pc[k] for k in ("unladen", "release",
                                          "dispersion", "agglomeration")],
-              "window": list(pc["window"]), "concentrationHistory": hist}
+              "window": list(pc["window"]), "UTolerance": pc["UTolerance"],
+              "concentrationHistory": hist}
     monkeypatch.setattr(mod, "study_record",
                         lambda name: {"result": result})
     x = rows(mod, p)["statement c_w/c_0 C2/C1"]
     assert x["sim"] == pytest.approx(2.0, rel=1e-9)
     assert x["status"] == "FAIL"
+    # a record without the tolerance was made at the study's 1e-8, not
+    # this preset's 1e-6
+    assert pc["UTolerance"] != 1e-8
+    del result["UTolerance"]
+    assert rows(mod, p) == {}
+    result["UTolerance"] = pc["UTolerance"]
     result["dtStar"] = 2 * pc["dtStar"]
     assert rows(mod, p) == {}
