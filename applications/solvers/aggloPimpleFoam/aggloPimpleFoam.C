@@ -81,6 +81,7 @@ Description
 #include "caseLock.H"
 #include "purgeWriteQueue.H"
 #include "writeNowStep.H"
+#include "correctProcessorPatches.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

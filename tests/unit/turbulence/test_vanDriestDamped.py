@@ -49,8 +49,10 @@ def expected_delta(case, t1, t2, nu=NU):
         yplus
 
 
-@pytest.mark.parametrize("ranks, nu", [(0, NU), (3, NU), (3, 1e-3)])
-def test_delta_matches_hand_computation(case_dir, foam_env, ranks, nu):
+@pytest.mark.parametrize("ranks, nu, split", [
+    (0, NU, "y"), (3, NU, "y"), (3, 1e-3, "y"), (2, NU, "z"), (2, NU, "x")])
+def test_delta_matches_hand_computation(case_dir, foam_env, ranks, nu,
+                                        split):
     channel_case(case_dir, n_particles=10)
     tp = case_dir / "constant/transportProperties"
     edit(tp, "nu 1.5212e-5;", f"nu {nu!r};")
@@ -60,8 +62,9 @@ def test_delta_matches_hand_computation(case_dir, foam_env, ranks, nu):
     edit(cd, f"endTime {30 * DT!r};", f"endTime {2 * DT!r};")
     dp = case_dir / "system/decomposeParDict"
     edit(dp, "numberOfSubdomains 2;",
-         "numberOfSubdomains 3;")
-    edit(dp, "n (2 1 1);", "n (1 3 1);")
+         f"numberOfSubdomains {max(ranks, 1)};")
+    n = {"x": "(2 1 1)", "y": "(1 3 1)", "z": "(1 1 2)"}[split]
+    edit(dp, "n (2 1 1);", f"n {n};")
     boxcase.run_case(case_dir, parallel=ranks)
     t1, t2 = (f"{k * DT:g}" for k in (1, 2))
     if ranks:
